@@ -1,0 +1,36 @@
+//! The command line: a clap definition per subcommand in `commands/`, nothing else.
+use std::ffi::OsString;
+
+use clap::{Parser, Subcommand};
+
+use crate::commands;
+use crate::shell::Shell;
+
+#[derive(Debug, Parser)]
+#[command(name = "cargo openr", bin_name = "cargo openr", version, about = "Build and run Sony AIBO (OPEN-R) programs on a PC")]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Materialise the OPEN-R SDK root (headers, mipsel-linux-* wrappers, mkbin, stubgen2)
+    Sdk(commands::sdk::Args),
+}
+
+pub fn run(args: Vec<OsString>, shell: &mut Shell) -> anyhow::Result<()> {
+    let cli = Cli::try_parse_from(args).unwrap_or_else(|e| e.exit());
+    match cli.command {
+        Command::Sdk(a) => commands::sdk::exec(a, shell),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn verify_cli() {
+        use clap::CommandFactory;
+        super::Cli::command().debug_assert();
+    }
+}

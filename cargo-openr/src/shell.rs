@@ -1,0 +1,34 @@
+//! All human-facing output, cargo style: status lines right-aligned to 12 columns on
+//! stderr; machine-readable results on stdout.
+use std::io::Write;
+
+pub struct Shell {
+    quiet: bool,
+}
+
+impl Shell {
+    pub fn new() -> Shell {
+        Shell { quiet: false }
+    }
+
+    #[allow(dead_code)]
+    pub fn set_quiet(&mut self, quiet: bool) {
+        self.quiet = quiet;
+    }
+
+    /// `   Installing OPEN-R SDK root` on stderr.
+    pub fn status(&mut self, verb: &str, msg: &str) {
+        if !self.quiet {
+            let _ = writeln!(std::io::stderr(), "{verb:>12} {msg}");
+        }
+    }
+
+    pub fn error(&mut self, msg: &str) {
+        let _ = writeln!(std::io::stderr(), "error: {msg}");
+    }
+
+    /// A result line on stdout (paths, JSON).
+    pub fn out(&mut self, line: &str) {
+        let _ = writeln!(std::io::stdout(), "{line}");
+    }
+}

@@ -1,0 +1,81 @@
+//! `mipsel-linux-g++` / `mipsel-linux-gcc`: the host compilers with the flags that let
+//! gcc-3.3-era AIBO code build unmodified (object-model 5.5, legacy-code 1).
+use std::ffi::OsString;
+use std::path::PathBuf;
+use std::process::Command;
+
+use crate::error::{Error, ErrorKind};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Lang {
+    Cxx,
+    C,
+}
+
+/// Flags added in front of the user's. Why each one:
+/// * `-std=gnu++98` / `-std=gnu89`: gcc 3.3's dialects. gnu++17 makes `std::byte` clash
+///   with OPEN-R's `byte` under `using namespace std`, gnu++11 rejects in-class
+///   `static const double` initialisers, C++14 drops `gets`. Only added when the
+///   Makefile chose no `-std=` itself.
+/// * `-fpermissive`: LP64 `(int)voidptr` casts and other gcc-3.3 leniencies are warnings.
+/// * `-fPIC`: every object, archive member included, ends up in a shared object.
+/// * `-Dasm(...)=`: MIPS inline assembly (e.g. `asm("mfc0 $2, $12")`) cannot run on the
+///   host; glibc and libstdc++ spell theirs `__asm__`, which stays intact.
+/// * `-fcommon` (C): gcc 10 made tentative definitions in headers a link error.
+pub(crate) fn host_flags(lang: Lang, user: &[OsString]) -> Vec<&'static str> {
+    let has_std = user.iter().any(|a| a.to_string_lossy().starts_with("-std="));
+    let mut flags = Vec::new();
+    if !has_std {
+        flags.push(match lang {
+            Lang::Cxx => "-std=gnu++98",
+            Lang::C => "-std=gnu89",
+        });
+    }
+    if lang == Lang::Cxx {
+        flags.push("-fpermissive");
+    } else {
+        flags.push("-fcommon");
+    }
+    flags.extend(["-fPIC", "-Dasm(...)="]);
+    flags
+}
+
+pub(crate) fn run(lang: Lang, args: Vec<OsString>) -> Result<i32, Error> {
+    let (env, default) = match lang {
+        Lang::Cxx => ("OPENR_HOST_CXX", "g++"),
+        Lang::C => ("OPENR_HOST_CC", "gcc"),
+    };
+    let exe = host_tool(default, &[env])?;
+    exec(Command::new(exe).args(host_flags(lang, &args)).args(args))
+}
+
+/// Finds a host tool: the first set variable of `env_overrides`, else `name` in PATH.
+pub fn host_tool(name: &str, env_overrides: &[&str]) -> Result<PathBuf, Error> {
+    for var in env_overrides {
+        if let Some(v) = std::env::var_os(var).filter(|v| !v.is_empty()) {
+            return which::which(&v).map_err(|_| missing(&v.to_string_lossy(), var));
+        }
+    }
+    which::which(name).map_err(|_| missing(name, "PATH"))
+}
+
+fn missing(tool: &str, from: &str) -> Error {
+    let pkg = match tool {
+        "g++" => "g++",
+        "gcc" => "gcc",
+        _ => "binutils",
+    };
+    ErrorKind::MissingHostTool {
+        tool: format!("{tool}` (from {from})"),
+        hint: format!("install it with `apt-get install {pkg}` (or run `cargo openr doctor`)"),
+    }
+    .into()
+}
+
+/// Replaces this process with `cmd` (a pass-through tool must behave exactly like the
+/// host one: same exit status, signals, stdio). Returns only if exec fails.
+pub(crate) fn exec(cmd: &mut Command) -> Result<i32, Error> {
+    use std::os::unix::process::CommandExt;
+    let err = cmd.exec();
+    Err(Error::io(PathBuf::from(cmd.get_program()), err))
+}

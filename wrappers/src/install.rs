@@ -1,0 +1,259 @@
+//! `cargo openr sdk install`: materialises an SDK root that unmodified Makefiles accept
+//! as `OPENRSDK_ROOT`.
+//!
+//! ```text
+//! <root>/bin/mipsel-linux-{g++,c++,gcc,ld,strip,ar,ranlib} -> ../libexec/cargo-openr
+//! <root>/OPEN_R/bin/{stubgen2,mkbin,gzcp}                    -> ../../libexec/cargo-openr
+//! <root>/OPEN_R/include/**       our OPEN-R headers
+//! <root>/OPEN_R/lib/lib*.a       the runtime's C++ surface, compiled here with host g++
+//! <root>/OPEN_R/src/**           its sources, for debuggers
+//! <root>/OPEN_R/MS_ERS7/...      Memory Stick base trees
+//! ```
+//!
+//! The tree is built beside the destination and swapped in with renames, so an
+//! interrupted install never leaves a half-written root; a root whose stamp matches is
+//! left untouched (idempotent, and fast).
+use std::collections::hash_map::DefaultHasher;
+use std::fs;
+use std::hash::{Hash, Hasher};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use sdk_runtime::sdk_files;
+
+use crate::compile::host_tool;
+use crate::error::{Error, ErrorKind};
+use crate::TOOLS;
+
+/// File whose presence marks a directory as a cargo-openr SDK root; holds the payload hash.
+pub const STAMP: &str = ".cargo-openr-sdk";
+
+/// What `install` did.
+#[derive(Debug, PartialEq, Eq)]
+pub enum Outcome {
+    Installed,
+    UpToDate,
+}
+
+/// Whether `dir` is an SDK root made by this tool.
+pub fn is_sdk_root(dir: &Path) -> bool {
+    dir.join(STAMP).is_file()
+}
+
+/// The per-user default location: `$XDG_DATA_HOME/cargo-openr/OPEN_R_SDK`
+/// (`~/.local/share/...`).
+pub fn default_prefix() -> Option<PathBuf> {
+    let data = std::env::var_os("XDG_DATA_HOME")
+        .filter(|v| !v.is_empty())
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".local/share")))?;
+    Some(data.join("cargo-openr").join("OPEN_R_SDK"))
+}
+
+/// Installs the SDK root at `prefix` using `exe` (the multi-call binary) for the tools.
+pub fn install(prefix: &Path, exe: &Path) -> Result<Outcome, Error> {
+    let exe_bytes = fs::read(exe).map_err(|e| Error::io(exe, e))?;
+    let stamp = payload_hash(&exe_bytes);
+    if fs::read_to_string(prefix.join(STAMP)).is_ok_and(|s| s.trim() == stamp) {
+        return Ok(Outcome::UpToDate);
+    }
+    if prefix.exists() && !is_sdk_root(prefix) && !is_empty_dir(prefix) {
+        return Err(Error::usage(format!(
+            "{} exists and is not a cargo-openr SDK root; choose a new or empty directory",
+            prefix.display()
+        )));
+    }
+    let parent = prefix.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
+    let name = prefix.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "sdk".into());
+    let staging = parent.join(format!(".{name}.partial-{}", std::process::id()));
+    let result = build_tree(&staging, &exe_bytes, &stamp).and_then(|()| swap_in(&staging, prefix));
+    if result.is_err() {
+        let _ = fs::remove_dir_all(&staging);
+    }
+    result.map(|()| Outcome::Installed)
+}
+
+fn is_empty_dir(p: &Path) -> bool {
+    fs::read_dir(p).is_ok_and(|mut d| d.next().is_none())
+}
+
+fn payload_hash(exe: &[u8]) -> String {
+    let mut h = DefaultHasher::new();
+    exe.hash(&mut h);
+    for (p, b) in sdk_files::INCLUDE.iter().chain(sdk_files::CXX) {
+        p.hash(&mut h);
+        b.hash(&mut h);
+    }
+    format!("{}-{:016x}", env!("CARGO_PKG_VERSION"), h.finish())
+}
+
+fn swap_in(staging: &Path, prefix: &Path) -> Result<(), Error> {
+    let old = staging.with_extension("old");
+    let had_old = prefix.exists();
+    if had_old {
+        fs::rename(prefix, &old).map_err(|e| Error::io(prefix, e))?;
+    }
+    if let Err(e) = fs::rename(staging, prefix) {
+        if had_old {
+            let _ = fs::rename(&old, prefix);
+        }
+        return Err(Error::io(prefix, e));
+    }
+    if had_old {
+        let _ = fs::remove_dir_all(&old);
+    }
+    Ok(())
+}
+
+fn build_tree(root: &Path, exe: &[u8], stamp: &str) -> Result<(), Error> {
+    let _ = fs::remove_dir_all(root);
+    let include = root.join("OPEN_R/include");
+    let src = root.join("OPEN_R/src");
+    write_files(&include, sdk_files::INCLUDE)?;
+    write_files(&src, sdk_files::CXX)?;
+    install_tools(root, exe)?;
+    build_archives(root, &include, &src)?;
+    write_base_trees(&root.join("OPEN_R"))?;
+    write(&root.join(STAMP), stamp.as_bytes())
+}
+
+fn write_files(dir: &Path, files: &[(&str, &[u8])]) -> Result<(), Error> {
+    for (rel, bytes) in files {
+        write(&dir.join(rel), bytes)?;
+    }
+    Ok(())
+}
+
+fn write(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+    if let Some(p) = path.parent() {
+        fs::create_dir_all(p).map_err(|e| Error::io(p, e))?;
+    }
+    fs::write(path, bytes).map_err(|e| Error::io(path, e))
+}
+
+/// Writes `bytes` to `path` through a temporary sibling and a rename.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+    let mut tmp = path.as_os_str().to_owned();
+    tmp.push(format!(".tmp-{}", std::process::id()));
+    let tmp = PathBuf::from(tmp);
+    fs::write(&tmp, bytes).map_err(|e| Error::io(path, e))?;
+    fs::rename(&tmp, path).map_err(|e| {
+        let _ = fs::remove_file(&tmp);
+        Error::io(path, e)
+    })
+}
+
+fn install_tools(root: &Path, exe: &[u8]) -> Result<(), Error> {
+    use std::os::unix::fs::{symlink, PermissionsExt};
+    let target = root.join("libexec/cargo-openr");
+    write(&target, exe)?;
+    fs::set_permissions(&target, fs::Permissions::from_mode(0o755)).map_err(|e| Error::io(&target, e))?;
+    for (name, _, dir) in TOOLS {
+        let d = root.join(dir);
+        fs::create_dir_all(&d).map_err(|e| Error::io(&d, e))?;
+        let up = "../".repeat(dir.split('/').count());
+        symlink(format!("{up}libexec/cargo-openr"), d.join(name)).map_err(|e| Error::io(d.join(name), e))?;
+    }
+    Ok(())
+}
+
+/// Compiles `OPEN_R/src/<lib>/*.cc` into `OPEN_R/lib/lib<lib>.a`, one archive per
+/// directory. Archives of families with no sources yet are still created (empty) so
+/// that `-l<lib>` always resolves.
+fn build_archives(root: &Path, include: &Path, src: &Path) -> Result<(), Error> {
+    let lib = root.join("OPEN_R/lib");
+    let obj = root.join("OPEN_R/lib/.obj");
+    fs::create_dir_all(&obj).map_err(|e| Error::io(&obj, e))?;
+    let cxx = host_tool("g++", &["OPENR_HOST_CXX"])?;
+    let ar = host_tool("ar", &[])?;
+    let mut jobs: Vec<(String, PathBuf, PathBuf)> = Vec::new();
+    for (rel, _) in sdk_files::CXX.iter().filter(|(p, _)| p.ends_with(".cc")) {
+        let Some((libname, file)) = rel.split_once('/') else { continue };
+        let o = obj.join(libname).join(file.replace('/', "_")).with_extension("o");
+        jobs.push((libname.to_string(), src.join(rel), o));
+    }
+    // Two compilers at a time: the machines this runs on have few cores.
+    let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(4);
+    let chunks: Vec<Vec<&(String, PathBuf, PathBuf)>> = (0..workers)
+        .map(|w| jobs.iter().skip(w).step_by(workers).collect())
+        .collect();
+    std::thread::scope(|s| {
+        let handles: Vec<_> = chunks
+            .iter()
+            .map(|chunk| {
+                let (cxx, src, include) = (&cxx, src, include);
+                s.spawn(move || -> Result<(), Error> {
+                    for (_, cc, o) in chunk {
+                        fs::create_dir_all(o.parent().unwrap()).map_err(|e| Error::io(o, e))?;
+                        let mut cmd = Command::new(cxx);
+                        cmd.args(["-std=gnu++98", "-fPIC", "-O2", "-g", "-c", "-Wall", "-Wno-unused"])
+                            .arg(format!("-I{}", src.display()))
+                            .arg(format!("-I{}", include.join("R4000").display()))
+                            .arg(format!("-I{}", include.join("MCOOP").display()))
+                            .arg(format!("-I{}", include.display()))
+                            .arg("-o")
+                            .arg(o)
+                            .arg(cc);
+                        run_quiet(&mut cmd)?;
+                    }
+                    Ok(())
+                })
+            })
+            .collect();
+        handles.into_iter().try_for_each(|h| h.join().expect("compiler thread panicked"))
+    })?;
+    for libname in crate::mkbin::DEFAULT_LIBS {
+        let archive = lib.join(format!("lib{libname}.a"));
+        let members: Vec<&PathBuf> = jobs.iter().filter(|(l, _, _)| l == libname).map(|(_, _, o)| o).collect();
+        let mut cmd = Command::new(&ar);
+        cmd.arg("rcs").arg(&archive).args(members);
+        run_quiet(&mut cmd)?;
+    }
+    fs::remove_dir_all(&obj).map_err(|e| Error::io(&obj, e))
+}
+
+/// Runs a child and folds its output into the error when it fails.
+fn run_quiet(cmd: &mut Command) -> Result<(), Error> {
+    let out = cmd.output().map_err(|e| Error::io(PathBuf::from(cmd.get_program()), e))?;
+    if out.status.success() {
+        return Ok(());
+    }
+    let line = std::iter::once(cmd.get_program())
+        .chain(cmd.get_args())
+        .map(|a| a.to_string_lossy())
+        .collect::<Vec<_>>()
+        .join(" ");
+    Err(ErrorKind::CommandFailed {
+        command: format!("{line}\n{}", String::from_utf8_lossy(&out.stderr)),
+        status: out.status.to_string(),
+    }
+    .into())
+}
+
+/// Memory Stick base trees (object-model 1.5): the directories and the comment-only
+/// OBJECT.CFG that a sample overlays.
+fn write_base_trees(open_r: &Path) -> Result<(), Error> {
+    const OBJECT_CFG: &str = "#\r\n# OBJECT.CFG of the base tree: list user objects here, one\r\n\
+                              # /MS/OPEN-R/MW/OBJS/XXXXXXXX.BIN per line.\r\n#\r\n[ERS-210]\r\n";
+    const WLAN: &str = "# Wireless LAN settings (KEY=VALUE), read by the runtime's network layer.\r\n\
+                        HOSTNAME=AIBO\r\nETHER_IP=127.0.0.1\r\nETHER_NETMASK=255.0.0.0\r\n\
+                        IP_GATEWAY=127.0.0.1\r\nDNS_SERVER_1=127.0.0.1\r\nSSID=AIBONET\r\n\
+                        WEPENABLE=0\r\nAPMODE=1\r\nCHANNEL=3\r\n";
+    for model in ["MS_ERS7", "MS_ERS200"] {
+        for kind in ["BASIC", "WLAN", "WCONSOLE"] {
+            for prot in ["memprot", "nomemprot"] {
+                let tree = open_r.join(model).join(kind).join(prot).join("OPEN-R");
+                write(&tree.join("MW/CONF/OBJECT.CFG"), OBJECT_CFG.as_bytes())?;
+                for d in ["MW/OBJS", "MW/DATA/P", "MW/DATA/E", "SYSTEM/OBJS", "SYSTEM/DATA/E"] {
+                    fs::create_dir_all(tree.join(d)).map_err(|e| Error::io(tree.join(d), e))?;
+                }
+                write(&tree.join("SYSTEM/CONF/OBJECT.CFG"), b"# System objects are built into the cargo-openr runtime.\r\n")?;
+                if kind != "BASIC" {
+                    write(&tree.join("SYSTEM/CONF/WLANDFLT.TXT"), WLAN.as_bytes())?;
+                }
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,118 @@
+//! `.ocf` object configuration files (object-model 1.3). The host has no use for stack,
+//! heap or priority, but `mkbin` still requires a well-formed ocf and records the object
+//! name in the `.BIN` for logs.
+use std::path::Path;
+
+use crate::error::{Error, ErrorKind};
+
+/// The parsed `object` line.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Ocf {
+    pub name: String,
+    pub stack: u64,
+    pub heap: u64,
+    pub priority: u64,
+    pub cache: bool,
+    pub tlb: bool,
+    pub user_mode: bool,
+}
+
+/// Parses the text of `path`: `#` comments, any whitespace (CRLF included) between words.
+pub fn parse(path: &Path, text: &str) -> Result<Ocf, Error> {
+    let mut words: Vec<(usize, &str)> = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let code = line.split('#').next().unwrap_or("");
+        words.extend(code.split_whitespace().map(|w| (i + 1, w)));
+    }
+    let err = |line: usize, message: String| -> Error {
+        ErrorKind::Ocf { path: path.to_path_buf(), line, message }.into()
+    };
+    let Some(&(first_line, first)) = words.first() else {
+        return Err(err(1, "empty file: expected `object NAME STACK HEAP PRIO CACHE TLB MODE`".into()));
+    };
+    if first != "object" {
+        return Err(err(first_line, format!("expected the word `object`, found `{first}`")));
+    }
+    let values: Vec<&str> = words[1..].iter().map(|(_, w)| *w).collect();
+    // 7-value form, or the 14-value form whose last six fields match the short form's.
+    let v: [&str; 7] = match values.len() {
+        7 => values[..].try_into().unwrap(),
+        14 => [values[0], values[7], values[8], values[10], values[11], values[12], values[13]],
+        n => {
+            return Err(err(
+                first_line,
+                format!("expected 7 values (`object NAME STACK HEAP PRIO CACHE TLB MODE`) or 14, found {n}"),
+            ))
+        }
+    };
+    let line_of = |value: &str| words.iter().find(|(_, w)| *w == value).map_or(first_line, |(l, _)| *l);
+    let size = |field: &str, value: &str| -> Result<u64, Error> {
+        let (digits, mult) = match value.strip_suffix(['k', 'K']) {
+            Some(d) => (d, 1024),
+            None => (value, 1),
+        };
+        digits
+            .parse::<u64>()
+            .map(|n| n * mult)
+            .map_err(|_| err(line_of(value), format!("{field} must be a number (optionally with a K suffix), found `{value}`")))
+    };
+    Ok(Ocf {
+        name: v[0].to_string(),
+        stack: size("STACK", v[1])?,
+        heap: size("HEAP", v[2])?,
+        priority: v[3]
+            .parse()
+            .map_err(|_| err(line_of(v[3]), format!("PRIO must be a number, found `{}`", v[3])))?,
+        cache: v[4] == "cache",
+        tlb: v[5] == "tlb",
+        user_mode: v[6] == "user",
+    })
+}
+
+/// Reads and parses an ocf file.
+pub fn read(path: &Path) -> Result<Ocf, Error> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+    parse(path, &text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(text: &str) -> Result<Ocf, Error> {
+        parse(Path::new("x.ocf"), text)
+    }
+
+    #[test]
+    fn short_form_with_crlf_and_comments() {
+        let o = p("# comment\r\nobject helloWorld 3072 16384 128 cache tlb user # tail\r\n").unwrap();
+        assert_eq!(o.name, "helloWorld");
+        assert_eq!((o.stack, o.heap, o.priority), (3072, 16384, 128));
+        assert!(o.cache && o.tlb && o.user_mode);
+    }
+
+    #[test]
+    fn k_suffix_and_multiline() {
+        let o = p("object big\n 8K 16k\n144 nocache notlb kernel\n").unwrap();
+        assert_eq!((o.stack, o.heap, o.priority), (8192, 16384, 144));
+        assert!(!o.cache && !o.tlb && !o.user_mode);
+    }
+
+    #[test]
+    fn long_form() {
+        let o = p("object n mod mCOOP pic pid none 4096 8192 none -1 128 cache tlb user").unwrap();
+        assert_eq!((o.name.as_str(), o.stack, o.heap, o.priority), ("n", 4096, 8192, 128));
+    }
+
+    #[test]
+    fn errors_name_file_and_line() {
+        let e = p("\n\nobjekt a 1 2 3 cache tlb user").unwrap_err().to_string();
+        assert_eq!(e, "x.ocf:3: ocf format error: expected the word `object`, found `objekt`");
+        let e = p("object a 1 2 3 cache tlb").unwrap_err().to_string();
+        assert!(e.starts_with("x.ocf:1: ocf format error: expected 7 values"), "{e}");
+        let e = p("object a 1\n zz 3 cache tlb user").unwrap_err().to_string();
+        assert!(e.starts_with("x.ocf:2: ocf format error: HEAP must be a number"), "{e}");
+        let e = p("  # only a comment\n").unwrap_err().to_string();
+        assert!(e.contains("empty file"), "{e}");
+    }
+}
