@@ -1,0 +1,268 @@
+//! Rendering of `def.h`, `entry.h`, `<Obj>Stub.h`, `<Obj>Stub.cc` (object-model 1.2).
+
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+
+use handlebars::Handlebars;
+use serde::Serialize;
+
+use crate::error::{Error, ErrorKind};
+use crate::parse::{is_c_identifier, is_reserved_extra, Service, StubCfg};
+
+/// Selectors 0..3 are the hooks Init, Start, Stop, Destroy.
+const NUM_OF_HOOK: u64 = 4;
+const HOOKS: [&str; 4] = ["Init", "Start", "Stop", "Destroy"];
+
+#[derive(Serialize)]
+struct ServiceCtx<'a> {
+    index: usize,
+    /// Service name without quotes.
+    name: &'a str,
+    sub_name: &'a str,
+    func1: Option<&'a str>,
+    func2: Option<&'a str>,
+    /// Selector of Control (subject) / Connect (observer).
+    sel1: u64,
+    /// Selector of Ready (subject) / Notify (observer).
+    sel2: u64,
+}
+
+#[derive(Serialize)]
+struct ExtraCtx<'a> {
+    index: usize,
+    name: &'a str,
+    /// `_<Name>stub`, the GEN_ENTRY name.
+    stub: String,
+    selector: u64,
+}
+
+#[derive(Serialize)]
+struct HookCtx {
+    index: usize,
+    name: &'static str,
+    selector: u64,
+}
+
+#[derive(Serialize)]
+struct Ctx<'a> {
+    object_name: &'a str,
+    num_subject: usize,
+    num_observer: usize,
+    num_of_hook: u64,
+    hooks: Vec<HookCtx>,
+    subjects: Vec<ServiceCtx<'a>>,
+    observers: Vec<ServiceCtx<'a>>,
+    num_of_basic_entries: u64,
+    extras: Vec<ExtraCtx<'a>>,
+}
+
+fn context(cfg: &StubCfg) -> Ctx<'_> {
+    let s = cfg.subjects.len() as u64;
+    let o = cfg.observers.len() as u64;
+    let basic = NUM_OF_HOOK + 2 * (s + o);
+    Ctx {
+        object_name: &cfg.object_name,
+        num_subject: cfg.subjects.len(),
+        num_observer: cfg.observers.len(),
+        num_of_hook: NUM_OF_HOOK,
+        hooks: HOOKS
+            .iter()
+            .enumerate()
+            .map(|(i, &name)| HookCtx {
+                index: i,
+                name,
+                selector: i as u64,
+            })
+            .collect(),
+        subjects: services(&cfg.subjects, NUM_OF_HOOK, NUM_OF_HOOK + s),
+        observers: services(&cfg.observers, NUM_OF_HOOK + 2 * s, NUM_OF_HOOK + 2 * s + o),
+        num_of_basic_entries: basic,
+        extras: cfg
+            .extras
+            .iter()
+            .enumerate()
+            .map(|(i, name)| ExtraCtx {
+                index: i,
+                name,
+                stub: format!("_{name}stub"),
+                selector: basic + i as u64,
+            })
+            .collect(),
+    }
+}
+
+fn services(list: &[Service], first1: u64, first2: u64) -> Vec<ServiceCtx<'_>> {
+    list.iter()
+        .enumerate()
+        .map(|(i, svc)| ServiceCtx {
+            index: i,
+            name: &svc.name,
+            sub_name: &svc.sub_name,
+            func1: svc.func1.as_deref(),
+            func2: svc.func2.as_deref(),
+            sel1: first1 + i as u64,
+            sel2: first2 + i as u64,
+        })
+        .collect()
+}
+
+/// Re-check a [`StubCfg`] that may have been built by hand rather than by the parser,
+/// so that `generate` never emits code that cannot compile because of the configuration.
+pub(crate) fn validate(cfg: &StubCfg) -> Result<(), Error> {
+    if cfg.object_name.is_empty() {
+        return Err(Error::bare(
+            ErrorKind::NoObjectName,
+            "no ObjectName: expected 'ObjectName : <ClassName>'",
+        ));
+    }
+    if !is_c_identifier(&cfg.object_name) {
+        return Err(Error::bare(
+            ErrorKind::InvalidObjectName,
+            format!("ObjectName '{}' is not a valid C++ class name", cfg.object_name),
+        ));
+    }
+    if cfg.subjects.is_empty() {
+        return Err(Error::bare(ErrorKind::NoSubject, crate::parse::msg::NO_SUBJECT));
+    }
+    if cfg.observers.is_empty() {
+        return Err(Error::bare(ErrorKind::NoObserver, crate::parse::msg::NO_OBSERVER));
+    }
+    for list in [&cfg.subjects, &cfg.observers] {
+        let mut seen = HashSet::new();
+        for svc in list {
+            let err = |kind, m: String| Error::at(kind, &svc.file, svc.line, m);
+            if svc.sub_name.is_empty() || !svc.sub_name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
+                return Err(err(
+                    ErrorKind::InvalidSubName,
+                    format!("SubName '{}' is not made of C identifier characters", svc.sub_name),
+                ));
+            }
+            if !seen.insert(svc.sub_name.as_str()) {
+                return Err(err(
+                    ErrorKind::DuplicateSubName,
+                    format!("SubName '{}' is used twice", svc.sub_name),
+                ));
+            }
+            if svc.name.chars().any(|c| !(' '..='~').contains(&c) || c == '"' || c == '\\') {
+                return Err(err(
+                    ErrorKind::InvalidServiceName,
+                    format!("service name \"{}\" cannot be written as a C string literal", svc.name),
+                ));
+            }
+            for f in [&svc.func1, &svc.func2].into_iter().flatten() {
+                if !is_c_identifier(f) {
+                    return Err(err(
+                        ErrorKind::InvalidFunctionName,
+                        format!("'{f}' is not a valid C++ member function name"),
+                    ));
+                }
+            }
+        }
+    }
+    let mut seen = HashSet::new();
+    for x in &cfg.extras {
+        if !is_c_identifier(x) || is_reserved_extra(x) {
+            return Err(Error::bare(
+                ErrorKind::InvalidExtraName,
+                format!("Extra '{x}' cannot be used as an entry name"),
+            ));
+        }
+        if !seen.insert(x.as_str()) || cfg.extras.iter().any(|y| *y == format!("{x}stub")) {
+            return Err(Error::bare(
+                ErrorKind::DuplicateExtra,
+                format!("Extra '{x}' is given twice or clashes with another extra"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn registry() -> Result<Handlebars<'static>, Error> {
+    let mut hb = Handlebars::new();
+    hb.register_escape_fn(handlebars::no_escape);
+    hb.set_strict_mode(true);
+    let templates = [
+        ("def.h", openr_templates::stubgen::DEF_H),
+        ("entry.h", openr_templates::stubgen::ENTRY_H),
+        ("Stub.h", openr_templates::stubgen::STUB_H),
+        ("Stub.cc", openr_templates::stubgen::STUB_CC),
+    ];
+    for (name, text) in templates {
+        hb.register_template_string(name, text)
+            .map_err(|e| Error::bare(ErrorKind::Template, format!("template {name}.hbs: {e}")))?;
+    }
+    Ok(hb)
+}
+
+/// The names of the generated files, in the order [`generate`] returns them.
+pub fn output_names(cfg: &StubCfg) -> [String; 4] {
+    [
+        "def.h".to_owned(),
+        "entry.h".to_owned(),
+        format!("{}Stub.h", cfg.object_name),
+        format!("{}Stub.cc", cfg.object_name),
+    ]
+}
+
+/// Render the four output files in memory: `(file name, contents)` for `def.h`, `entry.h`,
+/// `<ObjectName>Stub.h` and `<ObjectName>Stub.cc`, in that order.
+pub fn generate(cfg: &StubCfg) -> Result<Vec<(String, String)>, Error> {
+    validate(cfg)?;
+    let hb = registry()?;
+    let ctx = context(cfg);
+    let names = output_names(cfg);
+    let templates = ["def.h", "entry.h", "Stub.h", "Stub.cc"];
+    names
+        .into_iter()
+        .zip(templates)
+        .map(|(file, template)| {
+            hb.render(template, &ctx)
+                .map(|text| (file, text))
+                .map_err(|e| Error::bare(ErrorKind::Template, format!("rendering {template}.hbs: {e}")))
+        })
+        .collect()
+}
+
+/// Generate all files in memory, then write them into `dir` (which must exist).
+///
+/// Nothing is written if generation fails. Each file is first written to a temporary
+/// name in `dir` and then renamed over the final name, so a failed write never leaves a
+/// truncated output behind. Returns the paths written.
+pub fn write_outputs(cfg: &StubCfg, dir: &Path) -> Result<Vec<PathBuf>, Error> {
+    let files = generate(cfg)?;
+    let mut written = Vec::with_capacity(files.len());
+    for (name, text) in &files {
+        let path = dir.join(name);
+        let tmp = dir.join(format!(".{name}.stubgen2-tmp"));
+        let result = std::fs::write(&tmp, text).and_then(|()| std::fs::rename(&tmp, &path));
+        if let Err(e) = result {
+            let _ = std::fs::remove_file(&tmp);
+            return Err(Error::io(ErrorKind::Write, &path, "cannot write", e));
+        }
+        written.push(path);
+    }
+    Ok(written)
+}
+
+/// The summary `stubgen2` prints on stdout after a successful run (object-model 1.1).
+pub fn summary(cfg: &StubCfg) -> String {
+    let mut s = String::new();
+    let f = |x: &Option<String>| x.clone().unwrap_or_else(|| "null".to_owned());
+    s.push_str(&format!("Object = {}\n", cfg.object_name));
+    s.push_str(&format!("numOfSubject  = {}\n", cfg.subjects.len()));
+    s.push_str(&format!("numOfObserver = {}\n", cfg.observers.len()));
+    for svc in &cfg.subjects {
+        s.push_str(&format!("Service name = \"{}\"\n", svc.name));
+        s.push_str(&format!("    Control Function = {}\n", f(&svc.func1)));
+        s.push_str(&format!("    Ready Function   = {}\n", f(&svc.func2)));
+    }
+    for svc in &cfg.observers {
+        s.push_str(&format!("Service name = \"{}\"\n", svc.name));
+        s.push_str(&format!("    Connect Function = {}\n", f(&svc.func1)));
+        s.push_str(&format!("    Notify Function  = {}\n", f(&svc.func2)));
+    }
+    for x in &cfg.extras {
+        s.push_str(&format!("Extra function = {x}\n"));
+    }
+    s
+}
