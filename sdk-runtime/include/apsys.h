@@ -1,0 +1,62 @@
+/*
+ * apsys.h - low-level entry glue and raw console I/O.
+ *
+ * GEN_ENTRY(ENTRYNAME, FUNNAME), written at namespace scope and followed by
+ * `;`, defines a C-linkage function `void ENTRYNAME(void* msg)` that calls
+ * FUNNAME with `msg` converted to FUNNAME's parameter type. The runtime calls
+ * entries through the ObjectEntryTable with one argument: the message pointer.
+ * (On the robot this was an assembler trampoline; the host needs none.)
+ * Usable from C and C++.
+ */
+#ifndef _apsys_h_DEFINED
+#define _apsys_h_DEFINED
+
+#ifdef __cplusplus
+
+template <class T>
+inline void openr_gen_entry_call(void (*f)(T*), void* msg)
+{
+    f(static_cast<T*>(msg));
+}
+
+inline void openr_gen_entry_call(void (*f)(void*), void* msg)
+{
+    f(msg);
+}
+
+inline void openr_gen_entry_call(void (*f)(), void*)
+{
+    f();
+}
+
+#define GEN_ENTRY(ENTRYNAME, FUNNAME)                                        \
+    extern "C" __attribute__((visibility("default"), used))                 \
+    void ENTRYNAME(void* openr_entry_msg)                                    \
+    {                                                                        \
+        openr_gen_entry_call(FUNNAME, openr_entry_msg);                      \
+    }                                                                        \
+    extern "C" void ENTRYNAME(void* openr_entry_msg)
+
+extern "C" {
+#else
+
+#define GEN_ENTRY(ENTRYNAME, FUNNAME)                                        \
+    __attribute__((visibility("default"), used))                            \
+    void ENTRYNAME(void* openr_entry_msg)                                    \
+    {                                                                        \
+        ((void (*)(void*))(FUNNAME))(openr_entry_msg);                       \
+    }                                                                        \
+    void ENTRYNAME(void* openr_entry_msg)
+
+#endif
+
+int  apsysWrite(int fd, const void* buf, int size);
+int  apsysRead(int fd, void* buf, int size);
+void apsysPut(const char* str);
+void apsysPutHex(unsigned int value);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* _apsys_h_DEFINED */
