@@ -177,21 +177,28 @@ pub(crate) fn validate(cfg: &StubCfg) -> Result<(), Error> {
     Ok(())
 }
 
-fn registry() -> Result<Handlebars<'static>, Error> {
+const TEMPLATES: [(&str, &str); 4] = [
+    ("def.h", openr_templates::stubgen::DEF_H),
+    ("entry.h", openr_templates::stubgen::ENTRY_H),
+    ("Stub.h", openr_templates::stubgen::STUB_H),
+    ("Stub.cc", openr_templates::stubgen::STUB_CC),
+];
+
+/// A strict, non-escaping registry holding `templates` (name, text).
+fn registry(templates: &[(&str, &'static str)]) -> Result<Handlebars<'static>, Error> {
     let mut hb = Handlebars::new();
     hb.register_escape_fn(handlebars::no_escape);
     hb.set_strict_mode(true);
-    let templates = [
-        ("def.h", openr_templates::stubgen::DEF_H),
-        ("entry.h", openr_templates::stubgen::ENTRY_H),
-        ("Stub.h", openr_templates::stubgen::STUB_H),
-        ("Stub.cc", openr_templates::stubgen::STUB_CC),
-    ];
     for (name, text) in templates {
         hb.register_template_string(name, text)
             .map_err(|e| Error::bare(ErrorKind::Template, format!("template {name}.hbs: {e}")))?;
     }
     Ok(hb)
+}
+
+fn render(hb: &Handlebars<'_>, template: &str, ctx: &impl Serialize) -> Result<String, Error> {
+    hb.render(template, ctx)
+        .map_err(|e| Error::bare(ErrorKind::Template, format!("rendering {template}.hbs: {e}")))
 }
 
 /// The names of the generated files, in the order [`generate`] returns them.
@@ -208,40 +215,51 @@ pub fn output_names(cfg: &StubCfg) -> [String; 4] {
 /// `<ObjectName>Stub.h` and `<ObjectName>Stub.cc`, in that order.
 pub fn generate(cfg: &StubCfg) -> Result<Vec<(String, String)>, Error> {
     validate(cfg)?;
-    let hb = registry()?;
+    let hb = registry(&TEMPLATES)?;
     let ctx = context(cfg);
-    let names = output_names(cfg);
-    let templates = ["def.h", "entry.h", "Stub.h", "Stub.cc"];
-    names
+    output_names(cfg)
         .into_iter()
-        .zip(templates)
-        .map(|(file, template)| {
-            hb.render(template, &ctx)
-                .map(|text| (file, text))
-                .map_err(|e| Error::bare(ErrorKind::Template, format!("rendering {template}.hbs: {e}")))
-        })
+        .zip(TEMPLATES)
+        .map(|(file, (template, _))| Ok((file, render(&hb, template, &ctx)?)))
         .collect()
 }
 
 /// Generate all files in memory, then write them into `dir` (which must exist).
 ///
-/// Nothing is written if generation fails. Each file is first written to a temporary
-/// name in `dir` and then renamed over the final name, so a failed write never leaves a
-/// truncated output behind. Returns the paths written.
+/// Nothing is written if generation fails. The files are first all written under
+/// temporary names in `dir` and only then renamed to their final names, so a failure
+/// while writing (disk full, no permission, a directory in the way) leaves the previous
+/// outputs untouched and no temporary file behind. Returns the paths written.
 pub fn write_outputs(cfg: &StubCfg, dir: &Path) -> Result<Vec<PathBuf>, Error> {
     let files = generate(cfg)?;
-    let mut written = Vec::with_capacity(files.len());
-    for (name, text) in &files {
-        let path = dir.join(name);
-        let tmp = dir.join(format!(".{name}.stubgen2-tmp"));
-        let result = std::fs::write(&tmp, text).and_then(|()| std::fs::rename(&tmp, &path));
-        if let Err(e) = result {
-            let _ = std::fs::remove_file(&tmp);
-            return Err(Error::io(ErrorKind::Write, &path, "cannot write", e));
+    let targets: Vec<(PathBuf, PathBuf)> = files
+        .iter()
+        .map(|(name, _)| (dir.join(name), dir.join(format!(".{name}.stubgen2-tmp"))))
+        .collect();
+    let cleanup = |upto: usize| {
+        for (_, tmp) in &targets[..upto] {
+            let _ = std::fs::remove_file(tmp);
         }
-        written.push(path);
+    };
+    for (path, _) in &targets {
+        if path.is_dir() {
+            let e = std::io::Error::new(std::io::ErrorKind::Other, "is a directory");
+            return Err(Error::io(ErrorKind::Write, path, "cannot write", e));
+        }
     }
-    Ok(written)
+    for (i, ((path, tmp), (_, text))) in targets.iter().zip(&files).enumerate() {
+        if let Err(e) = std::fs::write(tmp, text) {
+            cleanup(i + 1);
+            return Err(Error::io(ErrorKind::Write, path, "cannot write", e));
+        }
+    }
+    for (path, tmp) in &targets {
+        if let Err(e) = std::fs::rename(tmp, path) {
+            cleanup(targets.len());
+            return Err(Error::io(ErrorKind::Write, path, "cannot write", e));
+        }
+    }
+    Ok(targets.into_iter().map(|(path, _)| path).collect())
 }
 
 /// The summary `stubgen2` prints on stdout after a successful run (object-model 1.1).
@@ -265,4 +283,35 @@ pub fn summary(cfg: &StubCfg) -> String {
         s.push_str(&format!("Extra function = {x}\n"));
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn template_errors_are_reported_not_panicked() {
+        let e = registry(&[("bad", "{{#each subjects}}unclosed")]).unwrap_err();
+        assert_eq!(e.kind(), ErrorKind::Template);
+        assert!(e.to_string().starts_with("template bad.hbs: "), "{e}");
+
+        // Strict mode: a misspelt variable is an error, not an empty string.
+        let hb = registry(&[("typo", "{{objectname}}")]).unwrap();
+        let cfg = crate::parse_str("a", "ObjectName : X\nNumOfOSubject : 1\nNumOfOObserver : 1\n\
+            Service : \"X.S.c.S\", null, null\nService : \"X.O.c.O\", null, null\n")
+        .unwrap();
+        let e = render(&hb, "typo", &context(&cfg)).unwrap_err();
+        assert_eq!(e.kind(), ErrorKind::Template);
+        assert!(e.to_string().starts_with("rendering typo.hbs: "), "{e}");
+    }
+
+    #[test]
+    fn no_html_escaping() {
+        let hb = registry(&[("t", "{{object_name}}")]).unwrap();
+        #[derive(Serialize)]
+        struct C {
+            object_name: &'static str,
+        }
+        assert_eq!(render(&hb, "t", &C { object_name: "a<b>&\"" }).unwrap(), "a<b>&\"");
+    }
 }

@@ -3,7 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-use stubgen::{parse_files, ErrorKind};
+use stubgen::parse_files;
 
 fn testdata() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../testdata")
