@@ -67,7 +67,12 @@ pub struct Error {
 }
 
 impl Error {
-    pub(crate) fn at(kind: ErrorKind, file: &Path, line: usize, message: impl Into<String>) -> Self {
+    pub(crate) fn at(
+        kind: ErrorKind,
+        file: &Path,
+        line: usize,
+        message: impl Into<String>,
+    ) -> Self {
         Error {
             kind,
             file: Some(file.to_path_buf()),
@@ -130,7 +135,9 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        self.source.as_ref().map(|e| e as &(dyn std::error::Error + 'static))
+        self.source
+            .as_ref()
+            .map(|e| e as &(dyn std::error::Error + 'static))
     }
 }
 

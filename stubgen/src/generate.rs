@@ -118,23 +118,40 @@ pub(crate) fn validate(cfg: &StubCfg) -> Result<(), Error> {
     if !is_c_identifier(&cfg.object_name) {
         return Err(Error::bare(
             ErrorKind::InvalidObjectName,
-            format!("ObjectName '{}' is not a valid C++ class name", cfg.object_name),
+            format!(
+                "ObjectName '{}' is not a valid C++ class name",
+                cfg.object_name
+            ),
         ));
     }
     if cfg.subjects.is_empty() {
-        return Err(Error::bare(ErrorKind::NoSubject, crate::parse::msg::NO_SUBJECT));
+        return Err(Error::bare(
+            ErrorKind::NoSubject,
+            crate::parse::msg::NO_SUBJECT,
+        ));
     }
     if cfg.observers.is_empty() {
-        return Err(Error::bare(ErrorKind::NoObserver, crate::parse::msg::NO_OBSERVER));
+        return Err(Error::bare(
+            ErrorKind::NoObserver,
+            crate::parse::msg::NO_OBSERVER,
+        ));
     }
     for list in [&cfg.subjects, &cfg.observers] {
         let mut seen = HashSet::new();
         for svc in list {
             let err = |kind, m: String| Error::at(kind, &svc.file, svc.line, m);
-            if svc.sub_name.is_empty() || !svc.sub_name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
+            if svc.sub_name.is_empty()
+                || !svc
+                    .sub_name
+                    .bytes()
+                    .all(|b| b.is_ascii_alphanumeric() || b == b'_')
+            {
                 return Err(err(
                     ErrorKind::InvalidSubName,
-                    format!("SubName '{}' is not made of C identifier characters", svc.sub_name),
+                    format!(
+                        "SubName '{}' is not made of C identifier characters",
+                        svc.sub_name
+                    ),
                 ));
             }
             if !seen.insert(svc.sub_name.as_str()) {
@@ -143,10 +160,17 @@ pub(crate) fn validate(cfg: &StubCfg) -> Result<(), Error> {
                     format!("SubName '{}' is used twice", svc.sub_name),
                 ));
             }
-            if svc.name.chars().any(|c| !(' '..='~').contains(&c) || c == '"' || c == '\\') {
+            if svc
+                .name
+                .chars()
+                .any(|c| !(' '..='~').contains(&c) || c == '"' || c == '\\')
+            {
                 return Err(err(
                     ErrorKind::InvalidServiceName,
-                    format!("service name \"{}\" cannot be written as a C string literal", svc.name),
+                    format!(
+                        "service name \"{}\" cannot be written as a C string literal",
+                        svc.name
+                    ),
                 ));
             }
             for f in [&svc.func1, &svc.func2].into_iter().flatten() {
@@ -197,8 +221,12 @@ fn registry(templates: &[(&str, &'static str)]) -> Result<Handlebars<'static>, E
 }
 
 fn render(hb: &Handlebars<'_>, template: &str, ctx: &impl Serialize) -> Result<String, Error> {
-    hb.render(template, ctx)
-        .map_err(|e| Error::bare(ErrorKind::Template, format!("rendering {template}.hbs: {e}")))
+    hb.render(template, ctx).map_err(|e| {
+        Error::bare(
+            ErrorKind::Template,
+            format!("rendering {template}.hbs: {e}"),
+        )
+    })
 }
 
 /// The names of the generated files, in the order [`generate`] returns them.
@@ -243,7 +271,7 @@ pub fn write_outputs(cfg: &StubCfg, dir: &Path) -> Result<Vec<PathBuf>, Error> {
     };
     for (path, _) in &targets {
         if path.is_dir() {
-            let e = std::io::Error::new(std::io::ErrorKind::Other, "is a directory");
+            let e = std::io::Error::other("is a directory");
             return Err(Error::io(ErrorKind::Write, path, "cannot write", e));
         }
     }
@@ -297,8 +325,11 @@ mod tests {
 
         // Strict mode: a misspelt variable is an error, not an empty string.
         let hb = registry(&[("typo", "{{objectname}}")]).unwrap();
-        let cfg = crate::parse_str("a", "ObjectName : X\nNumOfOSubject : 1\nNumOfOObserver : 1\n\
-            Service : \"X.S.c.S\", null, null\nService : \"X.O.c.O\", null, null\n")
+        let cfg = crate::parse_str(
+            "a",
+            "ObjectName : X\nNumOfOSubject : 1\nNumOfOObserver : 1\n\
+            Service : \"X.S.c.S\", null, null\nService : \"X.O.c.O\", null, null\n",
+        )
         .unwrap();
         let e = render(&hb, "typo", &context(&cfg)).unwrap_err();
         assert_eq!(e.kind(), ErrorKind::Template);
@@ -312,6 +343,16 @@ mod tests {
         struct C {
             object_name: &'static str,
         }
-        assert_eq!(render(&hb, "t", &C { object_name: "a<b>&\"" }).unwrap(), "a<b>&\"");
+        assert_eq!(
+            render(
+                &hb,
+                "t",
+                &C {
+                    object_name: "a<b>&\""
+                }
+            )
+            .unwrap(),
+            "a<b>&\""
+        );
     }
 }

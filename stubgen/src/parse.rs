@@ -72,7 +72,8 @@ pub(crate) fn parse_named_files(files: &[(PathBuf, PathBuf)]) -> Result<StubCfg,
     }
     let mut sources = Vec::with_capacity(files.len());
     for (name, path) in files {
-        let bytes = std::fs::read(path).map_err(|e| Error::io(ErrorKind::Read, name, "cannot read", e))?;
+        let bytes =
+            std::fs::read(path).map_err(|e| Error::io(ErrorKind::Read, name, "cannot read", e))?;
         sources.push((name.clone(), bytes));
     }
     parse_sources(&sources)
@@ -211,7 +212,10 @@ pub(crate) fn parse_sources(sources: &[(PathBuf, Vec<u8>)]) -> Result<StubCfg, E
                 "ObjectName has no value: expected 'ObjectName : <ClassName>'",
             ))
         }
-        Some(Declared { value: Some(name), loc }) => {
+        Some(Declared {
+            value: Some(name),
+            loc,
+        }) => {
             if !is_c_identifier(&name) {
                 return Err(loc.err(
                     ErrorKind::InvalidObjectName,
@@ -281,7 +285,10 @@ fn check_count(
     };
     match value {
         Count::Empty => Err(loc.err(none_kind, format!("{none_msg} ({keyword} has no value)"))),
-        Count::NotNumber(t) => Err(loc.err(none_kind, format!("{none_msg} ({keyword} value '{t}' is not a number)"))),
+        Count::NotNumber(t) => Err(loc.err(
+            none_kind,
+            format!("{none_msg} ({keyword} value '{t}' is not a number)"),
+        )),
         Count::Number(0) => Err(loc.err(none_kind, format!("{none_msg} ({keyword} is 0)"))),
         Count::Number(n) if *n != accepted => Err(loc.err(
             mismatch_kind,
@@ -294,7 +301,12 @@ fn check_count(
     }
 }
 
-fn parse_keyword_line<'a>(st: &mut State<'a>, kw: Keyword, value: &str, loc: Loc<'a>) -> Result<(), Error> {
+fn parse_keyword_line<'a>(
+    st: &mut State<'a>,
+    kw: Keyword,
+    value: &str,
+    loc: Loc<'a>,
+) -> Result<(), Error> {
     match kw {
         Keyword::ObjectName => {
             st.object_name = Some(Declared {
@@ -302,8 +314,18 @@ fn parse_keyword_line<'a>(st: &mut State<'a>, kw: Keyword, value: &str, loc: Loc
                 loc,
             });
         }
-        Keyword::NumOfSubject => st.num_subject = Some(Declared { value: count(value), loc }),
-        Keyword::NumOfObserver => st.num_observer = Some(Declared { value: count(value), loc }),
+        Keyword::NumOfSubject => {
+            st.num_subject = Some(Declared {
+                value: count(value),
+                loc,
+            })
+        }
+        Keyword::NumOfObserver => {
+            st.num_observer = Some(Declared {
+                value: count(value),
+                loc,
+            })
+        }
         Keyword::Service => {
             if let Some(svc) = parse_service(value, &loc)? {
                 let list = match svc.kind {
@@ -327,19 +349,26 @@ fn parse_keyword_line<'a>(st: &mut State<'a>, kw: Keyword, value: &str, loc: Loc
         }
         Keyword::Extra => {
             let name = parse_extra(value, &loc)?;
-            if let Some(prev) = st
-                .extras
-                .iter()
-                .find(|e| e.value == name || e.value == format!("{name}stub") || name == format!("{}stub", e.value))
-            {
+            if let Some(prev) = st.extras.iter().find(|e| {
+                e.value == name
+                    || e.value == format!("{name}stub")
+                    || name == format!("{}stub", e.value)
+            }) {
                 let detail = if prev.value == name {
                     format!("Extra '{name}' is given twice")
                 } else {
-                    format!("Extras '{}' and '{name}' give clashing entry names", prev.value)
+                    format!(
+                        "Extras '{}' and '{name}' give clashing entry names",
+                        prev.value
+                    )
                 };
                 return Err(loc.err(
                     ErrorKind::DuplicateExtra,
-                    format!("{detail} (first on {}:{})", prev.loc.file.display(), prev.loc.line),
+                    format!(
+                        "{detail} (first on {}:{})",
+                        prev.loc.file.display(),
+                        prev.loc.line
+                    ),
                 ));
             }
             st.extras.push(Declared { value: name, loc });
@@ -358,7 +387,9 @@ fn kind_word(kind: ServiceKind) -> &'static str {
 fn count(value: &str) -> Count {
     match first_token(value) {
         None => Count::Empty,
-        Some(t) if t.bytes().all(|b| b.is_ascii_digit()) => Count::Number(t.parse().unwrap_or(usize::MAX)),
+        Some(t) if t.bytes().all(|b| b.is_ascii_digit()) => {
+            Count::Number(t.parse().unwrap_or(usize::MAX))
+        }
         Some(t) => Count::NotNumber(t.to_owned()),
     }
 }
@@ -377,15 +408,26 @@ fn parse_service(value: &str, loc: &Loc<'_>) -> Result<Option<Service>, Error> {
     let func2 = parse_function(fields.get(2).copied(), 2, loc)?;
 
     let name = &quoted[1..quoted.len() - 1];
-    if let Some(c) = name.chars().find(|&c| !(' '..='~').contains(&c) || c == '"' || c == '\\') {
+    if let Some(c) = name
+        .chars()
+        .find(|&c| !(' '..='~').contains(&c) || c == '"' || c == '\\')
+    {
         return Err(loc.err(
             ErrorKind::InvalidServiceName,
             format!("service name \"{name}\" contains {c:?}; only printable ASCII without '\"' and '\\' is allowed"),
         ));
     }
     let sub_name = parts[1];
-    if sub_name.is_empty() || !sub_name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
-        let prefix = if kind == ServiceKind::Subject { "sbj" } else { "obs" };
+    if sub_name.is_empty()
+        || !sub_name
+            .bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b == b'_')
+    {
+        let prefix = if kind == ServiceKind::Subject {
+            "sbj"
+        } else {
+            "obs"
+        };
         return Err(loc.err(
             ErrorKind::InvalidSubName,
             format!(
@@ -433,7 +475,9 @@ fn parse_function(field: Option<&str>, n: usize, loc: &Loc<'_>) -> Result<Option
     if !is_c_identifier(name) {
         return Err(loc.err(
             ErrorKind::InvalidFunctionName,
-            format!("function field {n} '{field}': '{name}' is not a valid C++ member function name"),
+            format!(
+                "function field {n} '{field}': '{name}' is not a valid C++ member function name"
+            ),
         ));
     }
     Ok(Some(name.to_owned()))
@@ -450,7 +494,10 @@ fn parse_extra(value: &str, loc: &Loc<'_>) -> Result<String, Error> {
         };
         return Err(loc.err(
             ErrorKind::MissingExtraParens,
-            format!("{} ({detail}; write 'Extra : Name()' with no blank before '()')", msg::MISSING_EXTRA_PARENS),
+            format!(
+                "{} ({detail}; write 'Extra : Name()' with no blank before '()')",
+                msg::MISSING_EXTRA_PARENS
+            ),
         ));
     };
     if !is_c_identifier(name) {
@@ -492,13 +539,79 @@ pub(crate) fn is_reserved_extra(name: &str) -> bool {
 
 /// C++98 keywords (plus a few alternative tokens), which cannot name a class or member.
 const CXX_KEYWORDS: &[&str] = &[
-    "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case", "catch", "char", "class",
-    "compl", "const", "const_cast", "continue", "default", "delete", "do", "double", "dynamic_cast", "else",
-    "enum", "explicit", "export", "extern", "false", "float", "for", "friend", "goto", "if", "inline", "int",
-    "long", "mutable", "namespace", "new", "not", "not_eq", "operator", "or", "or_eq", "private",
-    "protected", "public", "register", "reinterpret_cast", "return", "short", "signed", "sizeof", "static",
-    "static_cast", "struct", "switch", "template", "this", "throw", "true", "try", "typedef", "typeid",
-    "typename", "union", "unsigned", "using", "virtual", "void", "volatile", "wchar_t", "while", "xor",
+    "and",
+    "and_eq",
+    "asm",
+    "auto",
+    "bitand",
+    "bitor",
+    "bool",
+    "break",
+    "case",
+    "catch",
+    "char",
+    "class",
+    "compl",
+    "const",
+    "const_cast",
+    "continue",
+    "default",
+    "delete",
+    "do",
+    "double",
+    "dynamic_cast",
+    "else",
+    "enum",
+    "explicit",
+    "export",
+    "extern",
+    "false",
+    "float",
+    "for",
+    "friend",
+    "goto",
+    "if",
+    "inline",
+    "int",
+    "long",
+    "mutable",
+    "namespace",
+    "new",
+    "not",
+    "not_eq",
+    "operator",
+    "or",
+    "or_eq",
+    "private",
+    "protected",
+    "public",
+    "register",
+    "reinterpret_cast",
+    "return",
+    "short",
+    "signed",
+    "sizeof",
+    "static",
+    "static_cast",
+    "struct",
+    "switch",
+    "template",
+    "this",
+    "throw",
+    "true",
+    "try",
+    "typedef",
+    "typeid",
+    "typename",
+    "union",
+    "unsigned",
+    "using",
+    "virtual",
+    "void",
+    "volatile",
+    "wchar_t",
+    "while",
+    "xor",
     "xor_eq",
 ];
 
@@ -516,10 +629,22 @@ mod tests {
 
     #[test]
     fn keyword_recognition() {
-        assert!(matches!(keyword("ObjectName : X"), Some((Keyword::ObjectName, " X"))));
-        assert!(matches!(keyword(" \tObjectName\t:X"), Some((Keyword::ObjectName, "X"))));
-        assert!(matches!(keyword("NumOfSubject:1"), Some((Keyword::NumOfSubject, "1"))));
-        assert!(matches!(keyword("NumOfOObserver :1"), Some((Keyword::NumOfObserver, "1"))));
+        assert!(matches!(
+            keyword("ObjectName : X"),
+            Some((Keyword::ObjectName, " X"))
+        ));
+        assert!(matches!(
+            keyword(" \tObjectName\t:X"),
+            Some((Keyword::ObjectName, "X"))
+        ));
+        assert!(matches!(
+            keyword("NumOfSubject:1"),
+            Some((Keyword::NumOfSubject, "1"))
+        ));
+        assert!(matches!(
+            keyword("NumOfOObserver :1"),
+            Some((Keyword::NumOfObserver, "1"))
+        ));
         assert!(keyword("objectName : X").is_none());
         assert!(keyword("ObjectNameX : X").is_none());
         assert!(keyword("ObjectName X : X").is_none());
@@ -550,7 +675,14 @@ mod tests {
 
     #[test]
     fn reserved_extras() {
-        for n in ["Init", "Destroy", "Control0", "Notify12", "hookstub3", "readystub0"] {
+        for n in [
+            "Init",
+            "Destroy",
+            "Control0",
+            "Notify12",
+            "hookstub3",
+            "readystub0",
+        ] {
             assert!(is_reserved_extra(n), "{n}");
         }
         for n in ["Control", "ListenCont", "Initialize", "hookstub", "Ready1x"] {
@@ -565,8 +697,16 @@ mod tests {
             line: 1,
         };
         assert_eq!(parse_function(Some("null"), 1, &loc).unwrap(), None);
-        assert_eq!(parse_function(Some("Foo()"), 1, &loc).unwrap().as_deref(), Some("Foo"));
-        assert_eq!(parse_function(Some("Foo \t()"), 1, &loc).unwrap().as_deref(), Some("Foo"));
+        assert_eq!(
+            parse_function(Some("Foo()"), 1, &loc).unwrap().as_deref(),
+            Some("Foo")
+        );
+        assert_eq!(
+            parse_function(Some("Foo \t()"), 1, &loc)
+                .unwrap()
+                .as_deref(),
+            Some("Foo")
+        );
         let e = parse_function(Some("NULL"), 2, &loc).unwrap_err();
         assert_eq!(e.kind(), ErrorKind::MissingFunctionParens);
         let e = parse_function(None, 2, &loc).unwrap_err();

@@ -60,8 +60,12 @@ fn bad_fixtures_fail_with_the_expected_message() {
             // Only the empty fixtures cannot carry an expectation.
             None => (1, "empty stub.cfg".to_owned()),
         };
-        let display_ok = err.to_string() == format!("{}:{}: {}", path.display(), line, err.message());
-        if err.file() != Some(path.as_path()) || err.line() != Some(line) || !err.message().starts_with(&msg) || !display_ok
+        let display_ok =
+            err.to_string() == format!("{}:{}: {}", path.display(), line, err.message());
+        if err.file() != Some(path.as_path())
+            || err.line() != Some(line)
+            || !err.message().starts_with(&msg)
+            || !display_ok
         {
             failures.push(format!("{err}\n    expected line {line}: {msg}"));
         }
@@ -70,7 +74,9 @@ fn bad_fixtures_fail_with_the_expected_message() {
 }
 
 fn find_stub_cfgs(dir: &Path, out: &mut Vec<PathBuf>) {
-    let Ok(rd) = std::fs::read_dir(dir) else { return };
+    let Ok(rd) = std::fs::read_dir(dir) else {
+        return;
+    };
     for e in rd.flatten() {
         let p = e.path();
         if p.is_dir() {
