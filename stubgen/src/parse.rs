@@ -384,14 +384,19 @@ fn kind_word(kind: ServiceKind) -> &'static str {
     }
 }
 
+/// A declared count, read like C's `atoi` on the first token (Sony's tool treats a
+/// non-numeric value like 0): optional `+`, then the leading digits; anything after
+/// them is ignored (`1;` is 1). No leading digit (including a `-` sign) = not a number.
 fn count(value: &str) -> Count {
-    match first_token(value) {
-        None => Count::Empty,
-        Some(t) if t.bytes().all(|b| b.is_ascii_digit()) => {
-            Count::Number(t.parse().unwrap_or(usize::MAX))
-        }
-        Some(t) => Count::NotNumber(t.to_owned()),
+    let Some(token) = first_token(value) else {
+        return Count::Empty;
+    };
+    let unsigned = token.strip_prefix('+').unwrap_or(token);
+    let digits = unsigned.bytes().take_while(u8::is_ascii_digit).count();
+    if digits == 0 {
+        return Count::NotNumber(token.to_owned());
     }
+    Count::Number(unsigned[..digits].parse().unwrap_or(usize::MAX))
 }
 
 /// Parse the text after `Service :`. `Ok(None)` = silently dropped (Sony's rule).

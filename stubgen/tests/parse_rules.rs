@@ -280,6 +280,24 @@ fn the_same_file_twice_duplicates_its_services() {
 }
 
 #[test]
+fn counts_are_read_like_atoi() {
+    for v in ["1;", "+1", "1st", "01"] {
+        let text = MIN.replace("NumOfOSubject : 1", &format!("NumOfOSubject : {v}"));
+        assert!(parse_str("a", &text).is_ok(), "{v}");
+    }
+    for v in ["-1", "x1", ";"] {
+        let text = MIN.replace("NumOfOSubject : 1", &format!("NumOfOSubject : {v}"));
+        let e = parse_str("a", &text).unwrap_err();
+        assert_eq!(e.kind(), ErrorKind::NoSubject, "{v}");
+        assert!(
+            e.message()
+                .ends_with(&format!("(NumOfOSubject value '{v}' is not a number)")),
+            "{e}"
+        );
+    }
+}
+
+#[test]
 fn huge_count_is_a_mismatch_not_a_crash() {
     let text = MIN.replace(
         "NumOfOSubject : 1",
