@@ -17,12 +17,15 @@ pub struct Cli {
 pub enum Command {
     /// Materialise the OPEN-R SDK root (headers, mipsel-linux-* wrappers, mkbin, stubgen2)
     Sdk(commands::sdk::Args),
+    /// Run a Memory Stick tree (MS/) on the host: load its objects and boot them
+    Run(commands::run::Args),
 }
 
 pub fn run(args: Vec<OsString>, shell: &mut Shell) -> anyhow::Result<()> {
     let cli = Cli::try_parse_from(args).unwrap_or_else(|e| e.exit());
     match cli.command {
         Command::Sdk(a) => commands::sdk::exec(a, shell),
+        Command::Run(a) => commands::run::exec(a, shell),
     }
 }
 

@@ -1,8 +1,35 @@
 //! The OPEN-R host runtime and the files of the SDK root it pairs with.
 //!
-//! [`sdk_files`] carries the OPEN-R headers (`include/`, installed as
-//! `OPEN_R/include`) and the C++ surface (`cxx/`, compiled into the `OPEN_R/lib`
-//! archives that every object links), both written from the clean-room spec.
+//! [`boot::run`] runs a Memory Stick tree: it loads each `.BIN` of OBJECT.CFG on a
+//! thread of its own and drives the OPEN-R life cycle; objects reach the runtime through
+//! [`host_api`] (`cxx/openr_host.h`). [`sdk_files`] carries the OPEN-R headers
+//! (`include/`) and the C++ surface (`cxx/`) that `cargo openr sdk install` writes into
+//! an SDK root, both written from the clean-room spec.
+//!
+//! ```
+//! use sdk_runtime::ms::is_eight_dot_three;
+//! assert!(is_eight_dot_three("OBJECT.CFG"));
+//! assert!(!is_eight_dot_three("LONGNAME.TEXT"));
+//! ```
+
+pub mod boot;
+pub mod cfg;
+pub mod clock;
+pub mod console;
+mod crash;
+pub mod design;
+pub mod error;
+pub mod host_api;
+pub mod loader;
+pub mod ms;
+pub mod object;
+pub mod power;
+pub mod runtime;
+pub mod shm;
+mod signals;
+pub mod timers;
+
+pub use error::{Error, ErrorKind, Result};
 
 pub mod sdk_files {
     //! Files embedded at build time: `(path relative to its tree, contents)`.

@@ -1,0 +1,91 @@
+//! `cargo openr run <MS dir>`: boot a Memory Stick tree on the host.
+use std::path::PathBuf;
+use std::time::Duration;
+
+use anyhow::Context;
+use sdk_runtime::boot::{self, Ended, RunOptions};
+use sdk_runtime::runtime::Diag;
+
+use crate::shell::Shell;
+
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The Memory Stick directory (the one containing OPEN-R/)
+    #[arg(value_name = "MS_DIR")]
+    ms_dir: PathBuf,
+    /// Stop cleanly after this much time (e.g. 5s, 250ms, 2m)
+    #[arg(long = "for", value_name = "DURATION", value_parser = parse_duration)]
+    run_for: Option<Duration>,
+    /// Robot design: selects [ERS-…] sections of the CFG files and GetRobotDesign()
+    #[arg(long, default_value = "ERS-7")]
+    design: String,
+    /// Skip CONNECT.CFG lines that name unknown services (the robot's behaviour) instead of failing
+    #[arg(long)]
+    lenient_connect: bool,
+    /// No runtime diagnostics on stderr (object output is unaffected)
+    #[arg(short, long)]
+    quiet: bool,
+    /// More runtime diagnostics on stderr
+    #[arg(short, long)]
+    verbose: bool,
+}
+
+/// `5s`, `250ms`, `2m`, `1h`, or plain seconds (`1.5`).
+pub fn parse_duration(s: &str) -> Result<Duration, String> {
+    let s = s.trim();
+    let (num, mult) = if let Some(n) = s.strip_suffix("ms") {
+        (n, 1e-3)
+    } else if let Some(n) = s.strip_suffix('s') {
+        (n, 1.0)
+    } else if let Some(n) = s.strip_suffix('m') {
+        (n, 60.0)
+    } else if let Some(n) = s.strip_suffix('h') {
+        (n, 3600.0)
+    } else {
+        (s, 1.0)
+    };
+    let v: f64 = num.trim().parse().map_err(|_| format!("`{s}` is not a duration (try 5s, 250ms, 2m)"))?;
+    if !(v.is_finite() && v >= 0.0) {
+        return Err(format!("`{s}` is not a duration (try 5s, 250ms, 2m)"));
+    }
+    Ok(Duration::from_secs_f64(v * mult))
+}
+
+pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
+    let opts = RunOptions {
+        ms_dir: args.ms_dir.clone(),
+        design: args.design,
+        run_for: args.run_for,
+        diag: Diag { quiet: args.quiet, verbose: args.verbose },
+        lenient_connect: args.lenient_connect,
+    };
+    if !args.quiet {
+        shell.status("Running", &args.ms_dir.display().to_string());
+    }
+    let ended = boot::run(&opts).with_context(|| format!("cannot run {}", args.ms_dir.display()))?;
+    if !args.quiet {
+        let how = match ended {
+            Ended::TimeUp => "time limit reached".to_string(),
+            Ended::Signal(s) => format!("signal {s}"),
+            Ended::Shutdown => "OPENR::Shutdown".to_string(),
+        };
+        shell.status("Finished", &format!("{} ({how})", args.ms_dir.display()));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_duration;
+    use std::time::Duration;
+
+    #[test]
+    fn durations() {
+        assert_eq!(parse_duration("5s"), Ok(Duration::from_secs(5)));
+        assert_eq!(parse_duration("250ms"), Ok(Duration::from_millis(250)));
+        assert_eq!(parse_duration("2m"), Ok(Duration::from_secs(120)));
+        assert_eq!(parse_duration("1.5"), Ok(Duration::from_millis(1500)));
+        assert!(parse_duration("soon").is_err());
+        assert!(parse_duration("-1s").is_err());
+    }
+}

@@ -1,0 +1,285 @@
+//! Running a Memory Stick: load every object of OBJECT.CFG in order, then the OPEN-R
+//! life cycle (object-model 2.1): Init all → connect (CONNECT.CFG) → Start all → … →
+//! Stop all → Destroy all.
+use std::ffi::CString;
+use std::path::PathBuf;
+use std::sync::atomic::AtomicBool;
+use std::sync::mpsc;
+use std::sync::{Arc, Mutex, OnceLock, RwLock};
+use std::time::{Duration, Instant};
+
+use crate::cfg;
+use crate::clock::Clock;
+use crate::error::{Error, ErrorKind, Result};
+use crate::loader::{self, Module};
+use crate::ms::MsDir;
+use crate::object::{self, ObjectSlot};
+use crate::power::{Power, PowerState};
+use crate::runtime::{Diag, Runtime, FIRST_OID};
+use crate::shm::ShmTable;
+use crate::timers::Timers;
+
+/// Options of one run.
+#[derive(Debug, Clone)]
+pub struct RunOptions {
+    pub ms_dir: PathBuf,
+    /// Robot design name (`ERS-7`), selects CFG sections and `GetRobotDesign`.
+    pub design: String,
+    /// Stop cleanly after this long.
+    pub run_for: Option<Duration>,
+    pub diag: Diag,
+    /// Skip CONNECT.CFG lines naming unregistered services with a warning, as the robot
+    /// does, instead of failing.
+    pub lenient_connect: bool,
+}
+
+/// How a run ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ended {
+    /// `--for` elapsed.
+    TimeUp,
+    /// SIGINT / SIGTERM.
+    Signal(i32),
+    /// An object called `OPENR::Shutdown`.
+    Shutdown,
+}
+
+const OREASON_BOOT: u32 = 0;
+const OREASON_SHUTDOWN: u32 = 1;
+const SEL_INIT: u32 = 0;
+const SEL_START: u32 = 1;
+const SEL_STOP: u32 = 2;
+const SEL_DESTROY: u32 = 3;
+/// Sony's observer waits 15 s for a subject's control reply; we give the whole
+/// connection a little more.
+const CONNECT_TIMEOUT: Duration = Duration::from_secs(20);
+/// A Stop/Destroy handler blocked on console input must not hang the shutdown.
+const SHUTDOWN_TIMEOUT: Duration = Duration::from_secs(3);
+
+/// Loads and runs the stick until it ends; returns how it ended.
+pub fn run(opts: &RunOptions) -> Result<Ended> {
+    let ms = MsDir::new(&opts.ms_dir).map_err(|e| Error::io(&opts.ms_dir, e))?;
+    let (object_cfg_path, objects) = cfg::object_cfg(&ms, &opts.design)?;
+    let (connect_path, connections) = cfg::connect_cfg(&ms, &opts.design)?;
+    let design_db = cfg::design_db(&ms, &opts.design)?;
+    // Read every image before starting anything, so a bad .BIN fails the run cleanly.
+    let images: Vec<Vec<u8>> = objects.iter().map(|o| loader::read_bin(&o.host_path)).collect::<Result<_>>()?;
+
+    let signals = crate::signals::block_termination()?;
+    crate::crash::install();
+    // Objects' printf/cout go through C stdio: line-buffer it like a console.
+    unsafe { libc::setvbuf(stdout_ptr(), std::ptr::null_mut(), libc::_IOLBF, 0) };
+    std::hint::black_box(crate::host_api::api_table());
+
+    let clock = Clock::new();
+    let rt = Runtime::install(Runtime {
+        ms,
+        design: CString::new(opts.design.clone()).map_err(|_| ErrorKind::Runtime("bad design name".into()))?,
+        design_db,
+        objects: RwLock::new(Vec::new()),
+        registry: Mutex::new(Vec::new()),
+        shm: ShmTable::new(),
+        design_data: Mutex::new(Vec::new()),
+        power: Power::new(PowerState::initial(clock.calendar().1)),
+        clock,
+        diag: opts.diag,
+        shutdown_requested: AtomicBool::new(false),
+        timers: Timers::new(),
+    });
+    std::thread::Builder::new()
+        .name("openr-timers".into())
+        .spawn(move || rt.timers.run(|dest, sel, msg| {
+            let _ = rt.send(dest, sel, msg);
+        }))
+        .map_err(|e| ErrorKind::Runtime(format!("cannot start the timer thread: {e}")))?;
+
+    let scratch = tempdir()?;
+    for (i, (entry, image)) in objects.iter().zip(images).enumerate() {
+        load_object(rt, i, &entry.ms_path, &entry.host_path, image, &scratch.0)
+            .map_err(|e| with_cfg_line(e, &object_cfg_path, entry.line))?;
+    }
+    let all = rt.all_objects();
+    rt.diag.info(&format!("loaded {} object(s) from {}", all.len(), object_cfg_path.display()));
+
+    for slot in &all {
+        hook(rt, slot, SEL_INIT, OREASON_BOOT, None)?;
+    }
+    connect_all(rt, &connect_path, &connections, opts.lenient_connect)?;
+    for slot in &all {
+        // Start is not awaited: a DoStart may block (on console input, say).
+        let module = slot.module.get().expect("loaded");
+        let _ = rt.send(slot.oid, SEL_START, module.reason_message(OREASON_BOOT));
+    }
+    rt.diag.info("all objects started");
+
+    let ended = wait_for_end(rt, &signals, opts.run_for);
+    rt.diag.info(&format!("shutting down ({ended:?}): Stop, then Destroy"));
+    for sel in [SEL_STOP, SEL_DESTROY] {
+        for slot in &all {
+            if !slot.is_stopped() {
+                let _ = hook(rt, slot, sel, OREASON_SHUTDOWN, Some(SHUTDOWN_TIMEOUT));
+            }
+        }
+    }
+    unsafe { libc::fflush(std::ptr::null_mut()) };
+    Ok(ended)
+}
+
+/// A scratch directory for the run's extracted objects, removed when dropped.
+struct Scratch(PathBuf);
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+fn tempdir() -> Result<Scratch> {
+    let base = std::env::var_os("TMPDIR").map(PathBuf::from).unwrap_or_else(|| "/tmp".into());
+    let dir = base.join(format!("cargo-openr-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
+    Ok(Scratch(dir))
+}
+
+fn stdout_ptr() -> *mut libc::FILE {
+    extern "C" {
+        static mut stdout: *mut libc::FILE;
+    }
+    unsafe { stdout }
+}
+
+fn with_cfg_line(e: Error, cfg: &std::path::Path, line: usize) -> Error {
+    match e.kind() {
+        ErrorKind::Load { .. } => Error::config(cfg, Some(line), e.to_string()),
+        _ => e,
+    }
+}
+
+/// Starts the object's thread, which loads the module (static constructors run there)
+/// and then serves messages.
+fn load_object(rt: &'static Runtime, index: usize, ms_path: &str, host: &std::path::Path, image: Vec<u8>, scratch: &std::path::Path) -> Result<()> {
+    let (tx, rx) = mpsc::channel();
+    let slot = Arc::new(ObjectSlot {
+        index,
+        oid: FIRST_OID + index,
+        bin: ms_path.to_string(),
+        module: OnceLock::new(),
+        tx,
+        stopped: AtomicBool::new(false),
+    });
+    rt.objects.write().unwrap_or_else(|p| p.into_inner()).push(slot.clone());
+    let (done_tx, done_rx) = mpsc::sync_channel::<Result<()>>(1);
+    let thread_name: String = host.file_stem().map_or("object".into(), |s| s.to_string_lossy().into_owned());
+    let (host, scratch) = (host.to_path_buf(), scratch.to_path_buf());
+    let worker = slot.clone();
+    std::thread::Builder::new()
+        .name(thread_name)
+        .spawn(move || {
+            object::set_current(worker.clone());
+            crate::crash::alt_stack();
+            match Module::load(&host, &image, &scratch, index) {
+                Ok(m) => {
+                    let _ = worker.module.set(m);
+                    let _ = done_tx.send(Ok(()));
+                }
+                Err(e) => {
+                    let _ = done_tx.send(Err(e));
+                    return;
+                }
+            }
+            drop(image);
+            crate::object::run_loop(&worker, rx, |m| rt.diag.warn(&m));
+        })
+        .map_err(|e| ErrorKind::Runtime(format!("cannot start a thread for {ms_path}: {e}")))?;
+    done_rx.recv().unwrap_or_else(|_| Err(Error::load(ms_path, "the loading thread died")))?;
+    // Name the thread after the ocf object name once known (visible in gdb / top -H).
+    rt.diag.info(&format!("loaded {} as `{}` (oid {:08x})", slot.bin, slot.name(), slot.oid));
+    Ok(())
+}
+
+/// Runs one life-cycle hook as a call and reports a non-success status.
+fn hook(rt: &Runtime, slot: &ObjectSlot, sel: u32, reason: u32, timeout: Option<Duration>) -> Result<()> {
+    let module = slot.module.get().expect("loaded");
+    let what = ["Init", "Start", "Stop", "Destroy"][sel as usize];
+    match rt.call(slot.oid, sel, module.reason_message(reason), timeout) {
+        Ok(reply) if !reply.is_empty() => {
+            let status = module.status_of(&reply);
+            if status != 0 {
+                rt.diag.warn(&format!("object `{}`: Do{what} returned status {status}", slot.name()));
+            }
+            Ok(())
+        }
+        Ok(_) => Ok(()),
+        Err(e) => {
+            rt.diag.warn(&format!("object `{}` did not answer {what} ({e:?})", slot.name()));
+            Ok(())
+        }
+    }
+}
+
+/// The connection phase: one CONNECT.CFG line at a time (object-model 2.8.1).
+fn connect_all(rt: &Runtime, path: &std::path::Path, conns: &[cfg::Connection], lenient: bool) -> Result<()> {
+    for c in conns {
+        let (subject, observer) = (rt.service(&c.subject), rt.service(&c.observer));
+        let (Some(subject), Some(observer)) = (subject, observer) else {
+            let missing = if rt.service(&c.subject).is_none() { &c.subject } else { &c.observer };
+            let mut names = rt.service_names();
+            names.sort();
+            let msg = format!(
+                "unknown service `{missing}`; registered services: {}",
+                if names.is_empty() { "none".to_string() } else { names.join(", ") }
+            );
+            if lenient {
+                rt.diag.warn(&format!("{}:{}: {msg} (line skipped)", path.display(), c.line));
+                continue;
+            }
+            return Err(Error::config(path, Some(c.line), msg));
+        };
+        let Some(obs_slot) = rt.object(observer.oid) else { continue };
+        let module = obs_slot.module.get().expect("loaded");
+        let msg = module.connect_message(0, subject.oid, subject.selector, &c.subject);
+        match rt.call(observer.oid, observer.selector, msg, Some(CONNECT_TIMEOUT)) {
+            Ok(reply) => {
+                let status = if reply.is_empty() { 0 } else { module.status_of(&reply) };
+                if status != 0 {
+                    rt.diag.warn(&format!("{}:{}: connection refused (status {status})", path.display(), c.line));
+                } else {
+                    rt.diag.info(&format!("connected {} -> {}", c.subject, c.observer));
+                }
+            }
+            Err(e) => rt.diag.warn(&format!("{}:{}: connection failed ({e:?})", path.display(), c.line)),
+        }
+    }
+    Ok(())
+}
+
+fn wait_for_end(rt: &Runtime, signals: &crate::signals::Termination, run_for: Option<Duration>) -> Ended {
+    let start = Instant::now();
+    loop {
+        if rt.shutdown_requested.load(std::sync::atomic::Ordering::Acquire) {
+            return Ended::Shutdown;
+        }
+        let mut slice = Duration::from_millis(20);
+        if let Some(total) = run_for {
+            let elapsed = start.elapsed();
+            if elapsed >= total {
+                return Ended::TimeUp;
+            }
+            slice = slice.min(total - elapsed);
+        }
+        if let Some(sig) = signals.wait(slice) {
+            return Ended::Signal(sig);
+        }
+    }
+}
+
+/// Changes the power state and notifies its observers (robot-api 9.3).
+pub fn update_power(rt: &Runtime, change: impl FnOnce(&mut PowerState)) {
+    let (state, observers) = rt.power.update(change);
+    for o in observers {
+        let Some(slot) = rt.object(o.oid) else { continue };
+        let Some(make) = slot.module.get().and_then(|m| m.make_power) else { continue };
+        let msg = loader::build(|buf, cap| unsafe { make((&state as *const PowerState).cast(), buf, cap) });
+        let _ = rt.send(o.oid, o.selector, msg);
+    }
+}

@@ -1,0 +1,182 @@
+//! Loading one `.BIN` (object-model 1.5, 5.6): gunzip (or take plain ELF), write it to
+//! the run's scratch directory (so gdb and backtraces find the symbols), `dlopen` it
+//! with `RTLD_LOCAL` — mkbin links with `-Bsymbolic`, so each object binds its own
+//! `Self`, `ObjectEntryTable`, `_Init` … while `std::cout` stays the process's one — and
+//! read its entry table.
+use std::ffi::{c_void, CStr, CString};
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+use crate::error::{Error, Result};
+
+/// An entry function: receives a pointer to the message bytes.
+pub type EntryFn = unsafe extern "C" fn(*mut c_void);
+type MakeReason = unsafe extern "C" fn(u32, *mut c_void, usize) -> usize;
+type MakeConnect = unsafe extern "C" fn(i32, *mut c_void, u32, *const libc::c_char, *mut c_void, usize) -> usize;
+type ReadStatus = unsafe extern "C" fn(*const c_void, usize) -> u32;
+pub type MakePower = unsafe extern "C" fn(*const c_void, *mut c_void, usize) -> usize;
+
+/// A loaded object module.
+pub struct Module {
+    handle: *mut c_void,
+    pub so_path: PathBuf,
+    entries: Vec<(u32, EntryFn)>,
+    make_reason: MakeReason,
+    make_connect: MakeConnect,
+    read_status: ReadStatus,
+    pub make_power: Option<MakePower>,
+    /// Name from the ocf (mkbin records it), if present.
+    pub ocf_name: Option<String>,
+}
+
+// The handle and function pointers are process-wide; the module's code is only run on
+// its object's thread, but building messages (pure functions) may happen anywhere.
+unsafe impl Send for Module {}
+unsafe impl Sync for Module {}
+
+const UNDEF: u32 = 0xffff_ffff;
+
+/// Reads a `.BIN`: gzip or plain ELF. Errors name the file and say what it is instead.
+pub fn read_bin(path: &Path) -> Result<Vec<u8>> {
+    let raw = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    let elf = if raw.starts_with(&[0x1f, 0x8b]) {
+        let mut out = Vec::with_capacity(raw.len() * 3);
+        flate2::read::GzDecoder::new(&raw[..])
+            .read_to_end(&mut out)
+            .map_err(|e| Error::load(path, format!("corrupt gzip data: {e}")))?;
+        out
+    } else {
+        raw
+    };
+    if !elf.starts_with(b"\x7fELF") {
+        let what = if elf.is_empty() { "an empty file".to_string() } else { format!("starts with {:02x?}", &elf[..elf.len().min(4)]) };
+        return Err(Error::load(path, format!("not an OPEN-R object: expected a gzipped or plain ELF shared object, found {what}")));
+    }
+    Ok(elf)
+}
+
+impl Module {
+    /// Loads `bin` (its ELF image already read) via `scratch/<stem>-<index>.so`. Static
+    /// constructors (the object's `Self`) run here, on the calling thread.
+    pub fn load(bin: &Path, elf: &[u8], scratch: &Path, index: usize) -> Result<Module> {
+        let stem = bin.file_stem().map_or("object".into(), |s| s.to_string_lossy().into_owned());
+        let so_path = scratch.join(format!("{index:02}-{stem}.so"));
+        std::fs::write(&so_path, elf).map_err(|e| Error::io(&so_path, e))?;
+        let c = CString::new(so_path.as_os_str().as_encoded_bytes()).map_err(|_| Error::load(bin, "path contains NUL"))?;
+        let handle = unsafe { libc::dlopen(c.as_ptr(), libc::RTLD_NOW | libc::RTLD_LOCAL) };
+        if handle.is_null() {
+            let msg = dlerror().replace(&*so_path.to_string_lossy(), &bin.to_string_lossy());
+            return Err(Error::load(bin, format!("cannot load: {msg}")));
+        }
+        let sym = |name: &str| -> Option<*mut c_void> {
+            let n = CString::new(name).ok()?;
+            let p = unsafe { libc::dlsym(handle, n.as_ptr()) };
+            (!p.is_null()).then_some(p)
+        };
+        let fail = |msg: String| {
+            unsafe { libc::dlclose(handle) };
+            Err(Error::load(bin, msg))
+        };
+        let Some(table) = sym("ObjectEntryTable") else {
+            return fail("no ObjectEntryTable in its dynamic symbol table: not an OPEN-R object (build it with mkbin and a stub)".into());
+        };
+        let (Some(mr), Some(mc), Some(rs)) = (sym("openr_make_reason_message"), sym("openr_make_connect_message"), sym("openr_read_status_message")) else {
+            return fail("lacks the runtime glue of libmcoopstub: rebuild it with this version's SDK root (`cargo openr sdk install`)".into());
+        };
+        let entries = match read_entry_table(table) {
+            Ok(e) => e,
+            Err(m) => return fail(m),
+        };
+        let ocf_name = sym("openr_ocf_name").map(|p| unsafe { CStr::from_ptr(p.cast()) }.to_string_lossy().into_owned());
+        Ok(Module {
+            handle,
+            so_path,
+            entries,
+            make_reason: unsafe { std::mem::transmute::<*mut c_void, MakeReason>(mr) },
+            make_connect: unsafe { std::mem::transmute::<*mut c_void, MakeConnect>(mc) },
+            read_status: unsafe { std::mem::transmute::<*mut c_void, ReadStatus>(rs) },
+            make_power: sym("openr_make_power_status_message").map(|p| unsafe { std::mem::transmute::<*mut c_void, MakePower>(p) }),
+            ocf_name,
+        })
+    }
+
+    /// The entry function for `selector`.
+    pub fn entry(&self, selector: u32) -> Option<EntryFn> {
+        self.entries.iter().find(|(s, _)| *s == selector).map(|(_, f)| *f)
+    }
+
+    pub fn selectors(&self) -> impl Iterator<Item = u32> + '_ {
+        self.entries.iter().map(|(s, _)| *s)
+    }
+
+    pub fn reason_message(&self, reason: u32) -> Vec<u8> {
+        build(|buf, cap| unsafe { (self.make_reason)(reason, buf, cap) })
+    }
+
+    pub fn connect_message(&self, command: i32, subject_oid: usize, subject_selector: u32, sub_name: &str) -> Vec<u8> {
+        let name = CString::new(sub_name).unwrap_or_default();
+        build(|buf, cap| unsafe { (self.make_connect)(command, subject_oid as *mut c_void, subject_selector, name.as_ptr(), buf, cap) })
+    }
+
+    pub fn status_of(&self, reply: &[u8]) -> u32 {
+        unsafe { (self.read_status)(reply.as_ptr().cast(), reply.len()) }
+    }
+}
+
+impl Drop for Module {
+    fn drop(&mut self) {
+        // Objects are never unloaded while their thread may run; the process exits instead.
+        let _ = self.handle;
+    }
+}
+
+/// Runs a message builder with a buffer that grows until the message fits.
+pub fn build(f: impl Fn(*mut c_void, usize) -> usize) -> Vec<u8> {
+    let mut cap = 512;
+    loop {
+        let mut buf = vec![0u8; cap];
+        let n = f(buf.as_mut_ptr().cast(), cap);
+        if n > 0 {
+            buf.truncate(n);
+            return buf;
+        }
+        if cap >= 1 << 20 {
+            return Vec::new();
+        }
+        cap *= 4;
+    }
+}
+
+/// Reads `{Selector selector; Entry entry;}` rows until `selector == UNDEF`.
+fn read_entry_table(table: *mut c_void) -> std::result::Result<Vec<(u32, EntryFn)>, String> {
+    #[repr(C)]
+    struct Row {
+        selector: u32,
+        entry: *mut c_void,
+    }
+    let rows = table.cast::<Row>();
+    let mut out = Vec::new();
+    for i in 0..4096 {
+        let row = unsafe { &*rows.add(i) };
+        if row.selector == UNDEF {
+            if out.is_empty() {
+                return Err("its ObjectEntryTable is empty (no Init/Start/Stop/Destroy entries)".into());
+            }
+            return Ok(out);
+        }
+        if row.entry.is_null() {
+            return Err(format!("ObjectEntryTable row {i} (selector {}) has no function", row.selector));
+        }
+        out.push((row.selector, unsafe { std::mem::transmute::<*mut c_void, EntryFn>(row.entry) }));
+    }
+    Err("its ObjectEntryTable has no {UNDEF, ENTRY_UNDEF} terminator within 4096 rows".into())
+}
+
+fn dlerror() -> String {
+    let p = unsafe { libc::dlerror() };
+    if p.is_null() {
+        "unknown dlopen error".into()
+    } else {
+        unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned()
+    }
+}

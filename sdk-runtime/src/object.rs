@@ -1,0 +1,97 @@
+//! One OPEN-R object: a thread named after it, a message queue, and a single-threaded
+//! loop that dispatches each message by selector through the object's entry table
+//! (object-model 2.1).
+use std::cell::{Cell, RefCell};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{Receiver, Sender, SyncSender};
+use std::sync::{Arc, OnceLock};
+
+use crate::loader::Module;
+
+/// A message on its way to an object.
+pub struct Envelope {
+    pub selector: u32,
+    pub data: Vec<u8>,
+    /// Present when the sender waits for `Reply`/`Return` (a `Call`).
+    pub reply: Option<SyncSender<Vec<u8>>>,
+}
+
+/// Everything the runtime knows about one loaded object.
+pub struct ObjectSlot {
+    pub index: usize,
+    /// The OID address, e.g. 0x80000040; printed by OSYSLOG as 8 hex digits.
+    pub oid: usize,
+    /// The `.BIN` path as OBJECT.CFG wrote it.
+    pub bin: String,
+    pub module: OnceLock<Module>,
+    pub tx: Sender<Envelope>,
+    /// Set when the object called `exit()`: it no longer runs (object-model 1.5).
+    pub stopped: AtomicBool,
+}
+
+impl ObjectSlot {
+    /// The object's name: its ocf NAME, else the `.BIN` file name.
+    pub fn name(&self) -> &str {
+        self.module
+            .get()
+            .and_then(|m| m.ocf_name.as_deref())
+            .unwrap_or_else(|| self.bin.rsplit('/').next().unwrap_or(&self.bin))
+    }
+
+    pub fn is_stopped(&self) -> bool {
+        self.stopped.load(Ordering::Acquire)
+    }
+}
+
+thread_local! {
+    /// The object whose thread this is.
+    static CURRENT: RefCell<Option<Arc<ObjectSlot>>> = const { RefCell::new(None) };
+    /// The reply channel of the message being processed, until answered.
+    static PENDING_REPLY: RefCell<Option<SyncSender<Vec<u8>>>> = const { RefCell::new(None) };
+    /// Object index and selector being run, read by the crash handler.
+    pub(crate) static RUNNING: Cell<(usize, u32)> = const { Cell::new((usize::MAX, u32::MAX)) };
+}
+
+pub fn current() -> Option<Arc<ObjectSlot>> {
+    CURRENT.with(|c| c.borrow().clone())
+}
+
+pub(crate) fn set_current(slot: Arc<ObjectSlot>) {
+    RUNNING.with(|r| r.set((slot.index, u32::MAX)));
+    CURRENT.with(|c| *c.borrow_mut() = Some(slot));
+}
+
+/// Answers the current call, if any is pending. Returns whether a reply was sent.
+pub fn reply_current(bytes: &[u8]) -> bool {
+    match PENDING_REPLY.with(|p| p.borrow_mut().take()) {
+        Some(tx) => {
+            let _ = tx.send(bytes.to_vec());
+            true
+        }
+        None => false,
+    }
+}
+
+/// The object's message loop; returns when the runtime drops its sender.
+pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(String)) {
+    let module = slot.module.get().expect("loaded before the loop starts");
+    while let Ok(mut env) = rx.recv() {
+        let Some(entry) = module.entry(env.selector) else {
+            warn(format!("object `{}` has no entry for selector {}: message dropped", slot.name(), env.selector));
+            if let Some(tx) = env.reply {
+                let _ = tx.send(Vec::new());
+            }
+            continue;
+        };
+        PENDING_REPLY.with(|p| *p.borrow_mut() = env.reply.take());
+        RUNNING.with(|r| r.set((slot.index, env.selector)));
+        // Keep a little slack after the message: C++ code may read a struct slightly
+        // larger than what a short sender wrote.
+        env.data.resize(env.data.len() + 64, 0);
+        unsafe { entry(env.data.as_mut_ptr().cast()) };
+        RUNNING.with(|r| r.set((slot.index, u32::MAX)));
+        // A call whose entry returned without Reply/Return gets an empty answer, so the
+        // caller is never left waiting forever.
+        reply_current(&[]);
+    }
+}

@@ -1,0 +1,141 @@
+//! The "system" side of OPEN-R: the process-wide state every object reaches through the
+//! host API — objects by OID, the service registry, shared memory, the clock, design
+//! data and power state — and the two message primitives, send and call.
+use std::ffi::CString;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{self, RecvTimeoutError};
+use std::sync::{Arc, Mutex, OnceLock, RwLock};
+use std::time::Duration;
+
+use crate::clock::Clock;
+use crate::ms::MsDir;
+use crate::object::{Envelope, ObjectSlot};
+use crate::power::Power;
+use crate::shm::ShmTable;
+
+/// OID of the first user object; the rest follow in OBJECT.CFG order.
+pub const FIRST_OID: usize = 0x8000_0040;
+
+/// A registered service (`OObject::RegisterServiceEntry`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Service {
+    pub name: String,
+    pub oid: usize,
+    pub selector: u32,
+}
+
+/// How runtime diagnostics are shown (stderr).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Diag {
+    pub quiet: bool,
+    pub verbose: bool,
+}
+
+impl Diag {
+    pub fn warn(&self, msg: &str) {
+        if !self.quiet {
+            eprintln!("warning: {msg}");
+        }
+    }
+    pub fn info(&self, msg: &str) {
+        if self.verbose {
+            eprintln!("{:>12} {msg}", "note:");
+        }
+    }
+}
+
+pub struct Runtime {
+    pub ms: MsDir,
+    pub design: CString,
+    pub design_db: Vec<(String, String)>,
+    pub objects: RwLock<Vec<Arc<ObjectSlot>>>,
+    pub registry: Mutex<Vec<Service>>,
+    pub shm: ShmTable,
+    pub design_data: Mutex<Vec<u32>>,
+    pub clock: Clock,
+    pub power: Power,
+    pub diag: Diag,
+    pub timers: crate::timers::Timers,
+    pub shutdown_requested: AtomicBool,
+}
+
+static RUNTIME: OnceLock<Runtime> = OnceLock::new();
+
+/// Why a message could not be delivered or answered.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CallError {
+    UnknownDestination,
+    SelfCall,
+    Timeout,
+}
+
+impl Runtime {
+    /// Installs the process's runtime; there is one per process (the host API is global).
+    pub fn install(rt: Runtime) -> &'static Runtime {
+        if RUNTIME.set(rt).is_err() {
+            panic!("one OPEN-R runtime per process");
+        }
+        RUNTIME.get().expect("just set")
+    }
+
+    pub fn get() -> Option<&'static Runtime> {
+        RUNTIME.get()
+    }
+
+    pub fn object(&self, oid: usize) -> Option<Arc<ObjectSlot>> {
+        let idx = oid.checked_sub(FIRST_OID)?;
+        self.objects.read().unwrap_or_else(|p| p.into_inner()).get(idx).cloned()
+    }
+
+    pub fn all_objects(&self) -> Vec<Arc<ObjectSlot>> {
+        self.objects.read().unwrap_or_else(|p| p.into_inner()).clone()
+    }
+
+    /// Queues a message (asynchronous `Send`).
+    pub fn send(&self, dest: usize, selector: u32, data: Vec<u8>) -> Result<(), CallError> {
+        let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
+        slot.tx.send(Envelope { selector, data, reply: None }).map_err(|_| CallError::UnknownDestination)
+    }
+
+    /// Sends and waits for the answer (`Call`), at most `timeout` if given.
+    pub fn call(&self, dest: usize, selector: u32, data: Vec<u8>, timeout: Option<Duration>) -> Result<Vec<u8>, CallError> {
+        if crate::object::current().is_some_and(|me| me.oid == dest) {
+            return Err(CallError::SelfCall);
+        }
+        let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
+        let (tx, rx) = mpsc::sync_channel(1);
+        slot.tx.send(Envelope { selector, data, reply: Some(tx) }).map_err(|_| CallError::UnknownDestination)?;
+        match timeout {
+            Some(t) => rx.recv_timeout(t).map_err(|e| match e {
+                RecvTimeoutError::Timeout => CallError::Timeout,
+                RecvTimeoutError::Disconnected => CallError::UnknownDestination,
+            }),
+            None => rx.recv().map_err(|_| CallError::UnknownDestination),
+        }
+    }
+
+    pub fn register(&self, name: &str, oid: usize, selector: u32) -> bool {
+        let mut reg = self.registry.lock().unwrap_or_else(|p| p.into_inner());
+        if reg.iter().any(|s| s.name == name) {
+            return false;
+        }
+        reg.push(Service { name: name.to_string(), oid, selector });
+        true
+    }
+
+    pub fn unregister_all_of(&self, oid: usize) {
+        self.registry.lock().unwrap_or_else(|p| p.into_inner()).retain(|s| s.oid != oid);
+    }
+
+    pub fn service(&self, name: &str) -> Option<Service> {
+        self.registry.lock().unwrap_or_else(|p| p.into_inner()).iter().find(|s| s.name == name).cloned()
+    }
+
+    pub fn service_names(&self) -> Vec<String> {
+        self.registry.lock().unwrap_or_else(|p| p.into_inner()).iter().map(|s| s.name.clone()).collect()
+    }
+
+    pub fn request_shutdown(&self) {
+        self.shutdown_requested.store(true, Ordering::Release);
+    }
+}

@@ -1,0 +1,86 @@
+//! Shared memory regions (RCRegion, data vectors, design data). One address space, so a
+//! region is just zeroed heap memory; what matters is its lifetime: it lives while any
+//! object holds a reference (robot-api 7), counted here across objects.
+use std::collections::HashMap;
+use std::sync::Mutex;
+
+struct Region {
+    base: *mut u8,
+    size: usize,
+    refs: usize,
+}
+
+// The raw pointer is only handed out, never dereferenced here.
+unsafe impl Send for Region {}
+
+pub struct ShmTable {
+    inner: Mutex<(u32, HashMap<u32, Region>)>,
+}
+
+impl ShmTable {
+    pub fn new() -> ShmTable {
+        ShmTable { inner: Mutex::new((0, HashMap::new())) }
+    }
+
+    /// Allocates `size` zeroed bytes (16-byte aligned) with one reference.
+    pub fn alloc(&self, size: usize) -> Option<(u32, *mut u8)> {
+        let base = unsafe { libc::calloc(1, size.max(1)) }.cast::<u8>();
+        if base.is_null() {
+            return None;
+        }
+        let mut g = self.inner.lock().unwrap_or_else(|p| p.into_inner());
+        g.0 = g.0.wrapping_add(1).max(1);
+        let id = g.0;
+        g.1.insert(id, Region { base, size, refs: 1 });
+        Some((id, base))
+    }
+
+    pub fn base(&self, id: u32) -> Option<(*mut u8, usize)> {
+        let g = self.inner.lock().unwrap_or_else(|p| p.into_inner());
+        g.1.get(&id).map(|r| (r.base, r.size))
+    }
+
+    pub fn add_ref(&self, id: u32) {
+        let mut g = self.inner.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some(r) = g.1.get_mut(&id) {
+            r.refs += 1;
+        }
+    }
+
+    /// Drops one reference; frees the memory with the last. Returns whether it was freed.
+    pub fn unref(&self, id: u32) -> bool {
+        let mut g = self.inner.lock().unwrap_or_else(|p| p.into_inner());
+        let Some(r) = g.1.get_mut(&id) else { return false };
+        r.refs -= 1;
+        if r.refs > 0 {
+            return false;
+        }
+        let r = g.1.remove(&id).expect("present");
+        unsafe { libc::free(r.base.cast()) };
+        true
+    }
+
+    /// Number of live regions (for leak checks in tests and benchmarks).
+    pub fn live(&self) -> usize {
+        self.inner.lock().unwrap_or_else(|p| p.into_inner()).1.len()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lives_until_the_last_reference() {
+        let t = ShmTable::new();
+        let (id, base) = t.alloc(64).unwrap();
+        assert!(!base.is_null());
+        assert_eq!(t.base(id).unwrap().1, 64);
+        t.add_ref(id);
+        assert!(!t.unref(id));
+        assert!(t.base(id).is_some());
+        assert!(t.unref(id));
+        assert!(t.base(id).is_none());
+        assert_eq!(t.live(), 0);
+    }
+}
