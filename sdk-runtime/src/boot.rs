@@ -14,7 +14,7 @@ use crate::error::{Error, ErrorKind, Result};
 use crate::loader::{self, Module};
 use crate::ms::MsDir;
 use crate::object::{self, ObjectSlot};
-use crate::power::{Power, PowerState};
+use crate::power::{Power, PowerState, ORSB_MOTOR_POWER, ORSB_PAUSE};
 use crate::runtime::{Diag, Runtime, FIRST_OID};
 use crate::shm::ShmTable;
 use crate::timers::Timers;
@@ -267,10 +267,25 @@ fn wait_for_end(rt: &Runtime, signals: &crate::signals::Termination, run_for: Op
             }
             slice = slice.min(total - elapsed);
         }
-        if let Some(sig) = signals.wait(slice) {
-            return Ended::Signal(sig);
+        match signals.wait(slice) {
+            Some(libc::SIGUSR1) => press_pause_button(rt),
+            Some(sig) => return Ended::Signal(sig),
+            None => {}
         }
     }
+}
+
+/// The pause button toggles orsbPAUSE; pressing it also cuts motor power, as the
+/// ERS-7's does in hardware (robot-api 9.3, 9.5).
+fn press_pause_button(rt: &Runtime) {
+    update_power(rt, |s| {
+        s.robot_status ^= ORSB_PAUSE;
+        if s.robot_status & ORSB_PAUSE != 0 {
+            s.robot_status &= !ORSB_MOTOR_POWER;
+        }
+    });
+    let pressed = rt.power.state().robot_status & ORSB_PAUSE != 0;
+    rt.diag.info(if pressed { "pause button pressed" } else { "pause button released" });
 }
 
 /// Changes the power state and notifies its observers (robot-api 9.3).

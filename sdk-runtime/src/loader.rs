@@ -65,7 +65,9 @@ impl Module {
         let c = CString::new(so_path.as_os_str().as_encoded_bytes()).map_err(|_| Error::load(bin, "path contains NUL"))?;
         let handle = unsafe { libc::dlopen(c.as_ptr(), libc::RTLD_NOW | libc::RTLD_LOCAL) };
         if handle.is_null() {
-            let msg = dlerror().replace(&*so_path.to_string_lossy(), &bin.to_string_lossy());
+            let err = dlerror();
+            let prefix = format!("{}: ", so_path.display());
+            let msg = err.strip_prefix(&prefix).unwrap_or(&err).to_string();
             return Err(Error::load(bin, format!("cannot load: {msg}")));
         }
         let sym = |name: &str| -> Option<*mut c_void> {

@@ -1,5 +1,6 @@
 //! Integration tests of the `cargo-openr` binary: one test binary, a module per area.
 mod corpus;
+mod run;
 mod sdk;
 mod support;
 mod tools;

@@ -47,3 +47,107 @@ pub fn copy_tree(from: &Path, to: &Path) {
         }
     }
 }
+
+/// A program of `testdata/programs/` built (`make install`) in a scratch copy.
+pub struct Built {
+    pub dir: tempfile::TempDir,
+    pub name: String,
+}
+
+impl Built {
+    /// The program's Memory Stick tree.
+    pub fn ms(&self) -> PathBuf {
+        self.dir.path().join(&self.name).join("MS")
+    }
+}
+
+/// Copies `testdata/programs/<name>` and runs `make OPENRSDK_ROOT=<root> install`;
+/// returns the copy and whether make succeeded, with its output.
+pub fn make_install(name: &str, extra: &[&str]) -> (Built, bool, String) {
+    let root = sdk_root();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path().join(name);
+    copy_tree(&repo().join("testdata/programs").join(name), &dir);
+    let (ok, log) = run(Command::new("make")
+        .arg(format!("OPENRSDK_ROOT={}", root.display()))
+        .args(extra)
+        .arg("install")
+        .current_dir(&dir));
+    (Built { dir: tmp, name: name.to_string() }, ok, log)
+}
+
+/// Builds a program that must build.
+pub fn build(name: &str) -> Built {
+    let (built, ok, log) = make_install(name, &[]);
+    assert!(ok, "building {name} failed:\n{log}");
+    built
+}
+
+/// Output of one `cargo openr run`.
+pub struct RunOutput {
+    pub code: Option<i32>,
+    pub stdout: String,
+    pub stderr: String,
+}
+
+impl RunOutput {
+    /// stdout lines that start with `prefix`, in order.
+    pub fn lines_starting(&self, prefix: &str) -> Vec<&str> {
+        self.stdout.lines().filter(|l| l.starts_with(prefix)).collect()
+    }
+}
+
+/// Runs `cargo openr run <ms> <args>` to completion (a hang is killed after 60 s and
+/// fails the test).
+pub fn run_ms(ms: &Path, args: &[&str]) -> RunOutput {
+    run_ms_signalled(ms, args, &[])
+}
+
+/// Same, sending `signal` to the runtime after each given delay (from its start).
+pub fn run_ms_signalled(ms: &Path, args: &[&str], signals: &[(std::time::Duration, i32)]) -> RunOutput {
+    use std::io::Read;
+    use std::time::{Duration, Instant};
+    let mut child = Command::new(exe())
+        .arg("run")
+        .arg(ms)
+        .args(args)
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut out_pipe = child.stdout.take().unwrap();
+    let mut err_pipe = child.stderr.take().unwrap();
+    let out_t = std::thread::spawn(move || { let mut s = Vec::new(); let _ = out_pipe.read_to_end(&mut s); s });
+    let err_t = std::thread::spawn(move || { let mut s = Vec::new(); let _ = err_pipe.read_to_end(&mut s); s });
+    let start = Instant::now();
+    let mut pending: Vec<(Duration, i32)> = signals.to_vec();
+    let status = loop {
+        if let Some(st) = child.try_wait().unwrap() {
+            break st;
+        }
+        pending.retain(|(at, sig)| {
+            if start.elapsed() >= *at {
+                unsafe { libc_kill(child.id() as i32, *sig) };
+                false
+            } else {
+                true
+            }
+        });
+        if start.elapsed() > Duration::from_secs(60) {
+            let _ = child.kill();
+            panic!("cargo openr run {} hung for 60 s", ms.display());
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    };
+    RunOutput {
+        code: status.code(),
+        stdout: String::from_utf8_lossy(&out_t.join().unwrap()).into_owned(),
+        stderr: String::from_utf8_lossy(&err_t.join().unwrap()).into_owned(),
+    }
+}
+
+extern "C" {
+    #[link_name = "kill"]
+    fn libc_kill(pid: i32, sig: i32) -> i32;
+}

@@ -1,0 +1,213 @@
+//! `cargo openr run`: programs of the corpus, built with the SDK root, behave as on the
+//! robot (object-model 2), and bad Memory Stick trees give one clear error.
+use std::fs;
+use std::io::Write;
+use std::time::Duration;
+
+use crate::support::{build, run_ms, run_ms_signalled, RunOutput};
+
+fn assert_ok(out: &RunOutput) {
+    assert_eq!(out.code, Some(0), "exit code\nstdout:\n{}\nstderr:\n{}", out.stdout, out.stderr);
+}
+
+/// Index of the first stdout line containing `needle`.
+fn line_of(out: &RunOutput, needle: &str) -> usize {
+    out.stdout.lines().position(|l| l.contains(needle)).unwrap_or_else(|| panic!("no line with {needle:?} in:\n{}\nstderr:\n{}", out.stdout, out.stderr))
+}
+
+#[test]
+fn hand_written_stub_hello_world_runs_its_life_cycle() {
+    let p = build("hello");
+    let out = run_ms(&p.ms(), &["--for", "1s"]);
+    assert_ok(&out);
+    let hello = line_of(&out, "!!! Hello World !!!");
+    let bye = line_of(&out, "Bye Bye ...");
+    assert!(hello < bye, "DoStart before DoStop:\n{}", out.stdout);
+    assert!(out.stdout.lines().any(|l| l == "[oid:80000040,prio:1] Bye Bye ..."), "OSYSLOG1 format of 4.2:\n{}", out.stdout);
+    assert!(!out.stdout.contains("DoInit") && !out.stdout.contains("DoDestroy"), "OSYSDEBUG is off without -DOPENR_DEBUG:\n{}", out.stdout);
+}
+
+#[test]
+fn stubgen_hello_world_runs_its_life_cycle() {
+    let p = build("hello-stubgen");
+    let out = run_ms(&p.ms(), &["--for", "1s"]);
+    assert_ok(&out);
+    assert!(line_of(&out, "!!! Hello World !!!") < line_of(&out, "Bye Bye ..."));
+}
+
+#[test]
+fn subject_and_observer_follow_the_ready_notify_protocol() {
+    let p = build("objcomm");
+    let out = run_ms(&p.ms(), &["--for", "1s"]);
+    assert_ok(&out);
+    let lines = out.lines_starting("Sample");
+    assert_eq!(
+        lines,
+        [
+            "SampleSubject::Ready() : ASSERT READY",
+            "SampleObserver::Notify() !!! Hello world !!!",
+            "SampleSubject::Ready() : ASSERT READY",
+            "SampleObserver::Notify() !!! Hello world again !!!",
+            "SampleSubject::Ready() : ASSERT READY",
+            "SampleSubject::Ready() : DEASSERT READY",
+        ],
+        "object-model 2.8.5; the DEASSERT comes from the observer's DoStop\nstderr:\n{}",
+        out.stderr
+    );
+}
+
+#[test]
+fn sigterm_runs_the_shutdown_sequence_and_exits_zero() {
+    let p = build("objcomm");
+    let out = run_ms_signalled(&p.ms(), &[], &[(Duration::from_millis(1500), 15)]);
+    assert_ok(&out);
+    assert!(out.stdout.contains("DEASSERT READY"), "Stop ran:\n{}", out.stdout);
+}
+
+#[test]
+fn one_class_loaded_as_several_objects_fans_out_and_in() {
+    let p = build("objcomm-multi");
+    let out = run_ms(&p.ms(), &["--for", "2s"]);
+    assert_ok(&out);
+    let count = |obs: &str| out.lines_starting(&format!("{obs}::Notify()")).len();
+    assert_eq!((count("SampleObserver1"), count("SampleObserver2"), count("SampleObserver3")), (2, 2, 4), "stdout:\n{}\nstderr:\n{}", out.stdout, out.stderr);
+}
+
+#[test]
+fn robot_design_selects_sections_and_reads_design_data() {
+    let p = build("robot-design");
+    let out = run_ms(&p.ms(), &["--for", "1s"]);
+    assert_ok(&out);
+    assert!(out.stdout.contains("OPENR::GetRobotDesign() : ERS-7"), "{}", out.stdout);
+    assert!(out.stdout.contains("SAMPLE_DATA : This is an ERS-7 (DRX-1000)."), "{}", out.stdout);
+    let out = run_ms(&p.ms(), &["--for", "1s", "--design", "ERS-220"]);
+    assert_ok(&out);
+    assert!(out.stdout.contains("OPENR::GetRobotDesign() : ERS-220"), "ERS-220 section and its gzipped data file:\n{}", out.stdout);
+}
+
+#[test]
+fn pause_button_reaches_power_observers_which_shut_down() {
+    let p = build("robot-design");
+    let out = run_ms_signalled(&p.ms(), &["--for", "20s"], &[(Duration::from_millis(1500), 10)]);
+    assert_ok(&out);
+    assert!(out.stdout.contains("PowerMonitor::UpdatePowerStatus()"), "power event delivered:\n{}", out.stdout);
+    assert!(out.stdout.contains("PowerMonitor : pause switch pressed, shutting down"), "{}", out.stdout);
+    assert!(out.stderr.contains("OPENR::Shutdown"), "the run ended by Shutdown, not by --for:\n{}", out.stderr);
+}
+
+#[test]
+fn memory_stick_files_are_case_insensitive_and_confined() {
+    let p = build("filesys");
+    let out = run_ms(&p.ms(), &["--for", "1s"]);
+    assert_ok(&out);
+    assert!(!out.stdout.contains("FAILED"), "{}", out.stdout);
+    assert!(out.stdout.contains("fopen(\"/MS/../../etc/passwd\") refused"), "{}", out.stdout);
+    assert!(out.stdout.matches("... ok").count() >= 5, "{}", out.stdout);
+}
+
+#[test]
+fn legacy_iostreams_and_c_library_work_inside_objects() {
+    let p = build("legacy");
+    let out = run_ms(&p.ms(), &["--for", "1s"]);
+    assert_ok(&out);
+    assert!(out.lines_starting("Legacy :").len() >= 3, "cout output reaches the console:\n{}\n{}", out.stdout, out.stderr);
+}
+
+fn crash_with(fault: &str) -> RunOutput {
+    let p = build("crash");
+    fs::write(p.ms().join("OPEN-R/MW/CONF/CRASH.CFG"), format!("{fault}\n")).unwrap();
+    let out = run_ms(&p.ms(), &["--for", "5s"]);
+    drop(p);
+    out
+}
+
+#[test]
+fn a_crashing_object_is_reported_with_its_entry_and_backtrace() {
+    for (fault, sig) in [("1", "SIGSEGV"), ("2", "SIGFPE"), ("3", "SIGABRT")] {
+        let out = crash_with(fault);
+        assert_ne!(out.code, Some(0), "fault {fault}: non-zero exit");
+        assert!(out.stdout.contains(&format!("Crash : fault {fault}")), "output before the crash is kept:\n{}", out.stdout);
+        assert!(out.stderr.contains("error: object `crash`") && out.stderr.contains(sig), "fault {fault}:\n{}", out.stderr);
+        assert!(out.stderr.contains("StartEntry") || out.stderr.contains("selector 1"), "names the entry being run:\n{}", out.stderr);
+        assert!(out.stderr.contains("backtrace:"), "{}", out.stderr);
+    }
+}
+
+// ---- bad Memory Stick trees ----
+
+fn run_err(ms: &std::path::Path) -> String {
+    let out = run_ms(ms, &["--for", "1s"]);
+    assert_ne!(out.code, Some(0), "must fail\nstdout:\n{}\nstderr:\n{}", out.stdout, out.stderr);
+    assert!(!out.stderr.contains("panicked"), "no panic:\n{}", out.stderr);
+    out.stderr
+}
+
+#[test]
+fn a_directory_without_object_cfg_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let err = run_err(dir.path());
+    assert!(err.contains("OPEN-R/MW/CONF/OBJECT.CFG: not found"), "{err}");
+}
+
+#[test]
+fn object_cfg_naming_a_missing_bin_is_refused_with_its_line() {
+    let p = build("hello");
+    let cfg = p.ms().join("OPEN-R/MW/CONF/OBJECT.CFG");
+    fs::write(&cfg, "# objects\n/MS/OPEN-R/MW/OBJS/HELLO.BIN\n/MS/OPEN-R/MW/OBJS/MISSING.BIN\n").unwrap();
+    let err = run_err(&p.ms());
+    assert!(err.contains("OBJECT.CFG:3: object `/MS/OPEN-R/MW/OBJS/MISSING.BIN` not found"), "{err}");
+}
+
+#[test]
+fn corrupt_gzip_and_non_elf_objects_are_refused() {
+    let p = build("hello");
+    let bin = p.ms().join("OPEN-R/MW/OBJS/HELLO.BIN");
+    let mut gz = fs::read(&bin).unwrap();
+    gz.truncate(gz.len() / 2);
+    fs::write(&bin, &gz).unwrap();
+    let err = run_err(&p.ms());
+    assert!(err.contains("HELLO.BIN: corrupt gzip data"), "{err}");
+
+    fs::write(&bin, b"#!/bin/sh\necho not an object\n").unwrap();
+    let err = run_err(&p.ms());
+    assert!(err.contains("HELLO.BIN: not an OPEN-R object: expected a gzipped or plain ELF shared object"), "{err}");
+}
+
+#[test]
+fn an_elf_without_entry_table_is_refused() {
+    let p = build("hello");
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("x.c"), "int not_an_object(void) { return 1; }\n").unwrap();
+    let st = std::process::Command::new("gcc").args(["-shared", "-fPIC", "-o", "x.so", "x.c"]).current_dir(dir.path()).status().unwrap();
+    assert!(st.success());
+    let so = fs::read(dir.path().join("x.so")).unwrap();
+    let mut enc = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::default());
+    enc.write_all(&so).unwrap();
+    fs::write(p.ms().join("OPEN-R/MW/OBJS/HELLO.BIN"), enc.finish().unwrap()).unwrap();
+    let err = run_err(&p.ms());
+    assert!(err.contains("HELLO.BIN: no ObjectEntryTable"), "{err}");
+    assert!(err.contains("OBJECT.CFG:"), "names the OBJECT.CFG line too: {err}");
+}
+
+#[test]
+fn connect_cfg_with_an_unknown_service_lists_the_registered_ones() {
+    let p = build("objcomm");
+    let cfg = p.ms().join("OPEN-R/MW/CONF/CONNECT.CFG");
+    fs::write(&cfg, "SampleSubject.SendString.char.S SampleObserver.ReceiveStrng.char.O\n").unwrap();
+    let err = run_err(&p.ms());
+    assert!(err.contains("CONNECT.CFG:1: unknown service `SampleObserver.ReceiveStrng.char.O`"), "{err}");
+    assert!(err.contains("SampleObserver.ReceiveString.char.O") && err.contains("SampleSubject.SendString.char.S"), "lists what exists: {err}");
+    // The robot's behaviour is available on request.
+    let out = run_ms(&p.ms(), &["--for", "500ms", "--lenient-connect"]);
+    assert_ok(&out);
+}
+
+#[test]
+fn duplicate_connections_are_refused() {
+    let p = build("objcomm");
+    let cfg = p.ms().join("OPEN-R/MW/CONF/CONNECT.CFG");
+    let line = "SampleSubject.SendString.char.S SampleObserver.ReceiveString.char.O\n";
+    fs::write(&cfg, format!("{line}{line}")).unwrap();
+    let err = run_err(&p.ms());
+    assert!(err.contains("CONNECT.CFG:2: duplicate connection"), "{err}");
+}
