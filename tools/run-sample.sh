@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Builds cargo-openr, its SDK root and one program of testdata/programs with its own
+# unmodified Makefile, then runs its Memory Stick tree (the README's first command).
+#   tools/run-sample.sh [PROGRAM] [cargo openr run options...]   (default: objcomm --for 5s)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tools/deps.sh
+sample=${1:-objcomm}; shift || true
+[ -d "testdata/programs/$sample" ] || { echo "no program testdata/programs/$sample; try one of: $(ls testdata/programs | tr '\n' ' ')" >&2; exit 2; }
+cargo build -q -p cargo-openr
+exe=$PWD/target/debug/cargo-openr
+root=$("$exe" sdk install --prefix "$PWD/target/openr-sdk")
+work=$PWD/target/samples/$sample
+rm -rf "$work" && mkdir -p "$(dirname "$work")" && cp -r "testdata/programs/$sample" "$work"
+make -s -C "$work" OPENRSDK_ROOT="$root" install
+[ $# -gt 0 ] || set -- --for 5s
+exec "$exe" run "$work/MS" "$@"
