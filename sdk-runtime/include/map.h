@@ -1,0 +1,12 @@
+/*
+ * map.h - pre-standard C++ header (gcc 3.3 "backward" header, legacy-code.md 1):
+ * includes the standard header and declares its std:: names globally.
+ */
+#ifndef _OPENR_COMPAT_map_h
+#define _OPENR_COMPAT_map_h
+
+#include <map>
+
+using std::map;
+
+#endif /* _OPENR_COMPAT_map_h */

@@ -1,0 +1,10 @@
+/*
+ * stream.h - pre-standard C++ header (gcc 3.3 "backward" header, legacy-code.md 1):
+ * includes the standard header and declares its std:: names globally.
+ */
+#ifndef _OPENR_COMPAT_stream_h
+#define _OPENR_COMPAT_stream_h
+
+#include <iostream.h>
+
+#endif /* _OPENR_COMPAT_stream_h */

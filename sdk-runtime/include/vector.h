@@ -1,0 +1,12 @@
+/*
+ * vector.h - pre-standard C++ header (gcc 3.3 "backward" header, legacy-code.md 1):
+ * includes the standard header and declares its std:: names globally.
+ */
+#ifndef _OPENR_COMPAT_vector_h
+#define _OPENR_COMPAT_vector_h
+
+#include <vector>
+
+using std::vector;
+
+#endif /* _OPENR_COMPAT_vector_h */
