@@ -19,6 +19,8 @@ pub enum Command {
     Sdk(commands::sdk::Args),
     /// Run a Memory Stick tree (MS/) on the host: load its objects and boot them
     Run(commands::run::Args),
+    /// Measure the runtime (message round trip, throughput, cold start) against the machine's limit
+    Bench(commands::bench::Args),
 }
 
 pub fn run(args: Vec<OsString>, shell: &mut Shell) -> anyhow::Result<()> {
@@ -26,6 +28,7 @@ pub fn run(args: Vec<OsString>, shell: &mut Shell) -> anyhow::Result<()> {
     match cli.command {
         Command::Sdk(a) => commands::sdk::exec(a, shell),
         Command::Run(a) => commands::run::exec(a, shell),
+        Command::Bench(a) => commands::bench::exec(a, shell),
     }
 }
 

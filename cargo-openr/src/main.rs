@@ -3,6 +3,7 @@
 //! does: `argv[0]` decides before clap runs.
 mod cli;
 mod commands;
+mod ops;
 mod shell;
 
 use std::ffi::OsString;

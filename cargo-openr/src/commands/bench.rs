@@ -1,0 +1,28 @@
+//! `cargo openr bench`: runtime benchmarks (figures recorded in the README).
+use std::path::PathBuf;
+
+use anyhow::Context;
+
+use crate::ops::bench;
+use crate::shell::Shell;
+
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The cargo-openr source tree (holds bench/programs)
+    #[arg(long, value_name = "DIR", default_value = ".")]
+    repo: PathBuf,
+}
+
+pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
+    let exe = std::env::current_exe().context("cannot locate cargo-openr")?;
+    let work = args.repo.join("target/bench");
+    std::fs::create_dir_all(&work)?;
+    let root = std::path::absolute(work.join("sdk"))?;
+    openr_wrappers::install::install(&root, &exe).context("installing the SDK root")?;
+    shell.status("Benchmarking", "bench/programs (real objects, real runtime)");
+    let figs = bench::run_all(&exe, &std::path::absolute(&args.repo)?, &root, &std::path::absolute(&work)?)?;
+    for f in figs {
+        shell.out(&format!("{:<70} {:>12.1} {}", f.name, f.value, f.unit));
+    }
+    Ok(())
+}

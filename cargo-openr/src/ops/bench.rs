@@ -1,0 +1,119 @@
+//! `cargo openr bench`: measures the runtime's hot paths with real objects built from
+//! `bench/programs/`, next to what the machine can do without OPEN-R (a raw two-thread
+//! ping-pong over the same kind of queue) in the same run.
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::mpsc;
+use std::time::Instant;
+
+use anyhow::{bail, Context, Result};
+
+/// One measured figure.
+#[derive(Debug, Clone)]
+pub struct Figure {
+    pub name: String,
+    pub value: f64,
+    pub unit: &'static str,
+}
+
+/// Builds `program` (a directory with an aggregate Makefile) in `work` with the SDK root.
+fn build(program: &Path, work: &Path, root: &Path) -> Result<PathBuf> {
+    let dst = work.join(program.file_name().context("program dir")?);
+    let _ = std::fs::remove_dir_all(&dst);
+    let st = Command::new("cp").arg("-r").arg(program).arg(&dst).status()?;
+    if !st.success() {
+        bail!("cannot copy {}", program.display());
+    }
+    // The programs include ../../common.mk relative to their object directories.
+    std::fs::copy(program.parent().context("parent")?.join("common.mk"), work.join("common.mk"))?;
+    let out = Command::new("make").arg(format!("OPENRSDK_ROOT={}", root.display())).arg("install").current_dir(&dst).output()?;
+    if !out.status.success() {
+        bail!("building {} failed:\n{}{}", program.display(), String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    }
+    Ok(dst.join("MS"))
+}
+
+fn run_ms(exe: &Path, ms: &Path) -> Result<String> {
+    let out = Command::new(exe).args(["run", "-q", "--for", "120s"]).arg(ms).output()?;
+    if !out.status.success() {
+        bail!("running {} failed:\n{}", ms.display(), String::from_utf8_lossy(&out.stderr));
+    }
+    Ok(String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
+/// `key=value` fields of the first stdout line starting with `prefix`.
+fn fields(out: &str, prefix: &str) -> Vec<(String, f64)> {
+    out.lines()
+        .filter(|l| l.starts_with(prefix))
+        .flat_map(|l| l.split_whitespace())
+        .filter_map(|kv| kv.split_once('='))
+        .filter_map(|(k, v)| Some((k.to_string(), v.parse().ok()?)))
+        .collect()
+}
+
+fn monotonic_ns() -> i64 {
+    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+    unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC, &mut ts) };
+    ts.tv_sec * 1_000_000_000 + ts.tv_nsec
+}
+
+/// The machine's limit for a message round trip between two threads over std's
+/// channel (the queue every object has): p50 and p99 in ns, and messages per second.
+pub fn raw_ping_pong(rounds: usize) -> (f64, f64, f64) {
+    let (to_b, from_a) = mpsc::channel::<u32>();
+    let (to_a, from_b) = mpsc::channel::<u32>();
+    let echo = std::thread::spawn(move || {
+        while let Ok(v) = from_a.recv() {
+            if to_a.send(v).is_err() {
+                break;
+            }
+        }
+    });
+    let mut rtt = Vec::with_capacity(rounds);
+    let start = Instant::now();
+    for i in 0..rounds as u32 {
+        let t = Instant::now();
+        to_b.send(i).expect("echo thread alive");
+        from_b.recv().expect("echo thread alive");
+        rtt.push(t.elapsed().as_nanos() as f64);
+    }
+    let secs = start.elapsed().as_secs_f64();
+    drop(to_b);
+    let _ = echo.join();
+    rtt.sort_by(|a, b| a.total_cmp(b));
+    (rtt[rounds / 2], rtt[rounds * 99 / 100], 2.0 * rounds as f64 / secs)
+}
+
+/// Runs every benchmark; `repo` holds `bench/programs`, `root` is an installed SDK root.
+pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path) -> Result<Vec<Figure>> {
+    let programs = repo.join("bench/programs");
+    let mut figs = Vec::new();
+    let mut fig = |name: &str, value: f64, unit: &'static str| figs.push(Figure { name: name.into(), value, unit });
+
+    let ms = build(&programs.join("pingpong"), work, root)?;
+    let out = run_ms(exe, &ms)?;
+    let f = fields(&out, "BENCH pingpong");
+    let get = |k: &str| f.iter().find(|(n, _)| n == k).map(|(_, v)| *v).with_context(|| format!("no {k} in:\n{out}"));
+    fig("notify→ready round trip p50 (2 objects)", get("p50_ns")? / 1000.0, "µs");
+    fig("notify→ready round trip p99 (2 objects)", get("p99_ns")? / 1000.0, "µs");
+    fig("object messages per second", get("msgs_per_sec")?, "msg/s");
+    let (p50, p99, rate) = raw_ping_pong(20_000);
+    fig("raw two-thread channel ping-pong p50", p50 / 1000.0, "µs");
+    fig("raw two-thread channel ping-pong p99", p99 / 1000.0, "µs");
+    fig("raw channel messages per second", rate, "msg/s");
+
+    let ms = build(&programs.join("coldstart"), work, root)?;
+    let t0 = monotonic_ns();
+    let out = Command::new(exe).args(["run", "-q", "--for", "0.2s"]).arg(&ms).output()?;
+    if !out.status.success() {
+        bail!("coldstart run failed: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let starts: Vec<f64> = fields(&stdout, "BENCH coldstart").into_iter().map(|(_, v)| v).collect();
+    if starts.len() != 10 {
+        bail!("expected 10 DoStart lines, got {}:\n{stdout}", starts.len());
+    }
+    let last = starts.iter().copied().fold(f64::MIN, f64::max);
+    fig("cold start to the 10th DoStart (10 objects, process spawn included)", (last - t0 as f64) / 1e6, "ms");
+    Ok(figs)
+}
