@@ -2,7 +2,6 @@
 //!
 //! Sony linked a MIPS executable with a snapshot header; we link a position-independent
 //! shared object that the runtime `dlopen`s:
-//! * `-z defs`, so a missing function is reported at build time;
 //! * `-Bsymbolic` so that each object binds its own `Self`, `ObjectEntryTable`, `_Init`…
 //!   (every object defines the same names, 5.6);
 //! * `--wrap` for the libc calls the runtime must see ([`WRAPPED`]);
@@ -139,8 +138,7 @@ pub fn link(opts: &Options, own_root: &Path) -> Result<PathBuf, Error> {
 
     let tmp = with_ext(&output, ".partial");
     let mut ld = Command::new(&cxx);
-    // -z defs: an undefined symbol is a link error naming it, not a load failure later.
-    ld.args(["-shared", "-fPIC", "-Wl,-Bsymbolic", "-Wl,-z,defs"]);
+    ld.args(["-shared", "-fPIC", "-Wl,-Bsymbolic"]);
     ld.arg(format!("-Wl,--wrap={}", WRAPPED.join(",--wrap=")));
     ld.arg(format!("-L{}", root.join("OPEN_R/lib").display()));
     ld.arg("-o").arg(&tmp).arg(&snap_o).args(&opts.link_args);
