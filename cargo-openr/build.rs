@@ -1,5 +1,8 @@
-//! Objects find the runtime's API table with dlsym(RTLD_DEFAULT, "openr_runtime_api_v1"):
-//! export that one symbol from the executable.
+//! The runtime lives in this executable; objects (shared libraries) reach it through two
+//! exported symbols: the API table they find with dlsym, and the `fopen64` interposer
+//! that maps `/MS` paths for libstdc++'s file streams.
 fn main() {
-    println!("cargo:rustc-link-arg-bins=-Wl,--export-dynamic-symbol=openr_runtime_api_v1");
+    for sym in ["openr_runtime_api_v1", "fopen64"] {
+        println!("cargo:rustc-link-arg-bins=-Wl,--export-dynamic-symbol={sym}");
+    }
 }

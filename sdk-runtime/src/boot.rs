@@ -70,6 +70,7 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
     // Objects' printf/cout go through C stdio: line-buffer it like a console.
     unsafe { libc::setvbuf(stdout_ptr(), std::ptr::null_mut(), libc::_IOLBF, 0) };
     std::hint::black_box(crate::host_api::api_table());
+    std::hint::black_box(crate::interpose::keep());
 
     let clock = Clock::new();
     let rt = Runtime::install(Runtime {
@@ -180,6 +181,7 @@ fn load_object(rt: &'static Runtime, index: usize, ms_path: &str, host: &std::pa
             match Module::load(&host, &image, &scratch, index) {
                 Ok(m) => {
                     let _ = worker.module.set(m);
+                    name_thread(worker.name());
                     let _ = done_tx.send(Ok(()));
                 }
                 Err(e) => {
@@ -192,9 +194,16 @@ fn load_object(rt: &'static Runtime, index: usize, ms_path: &str, host: &std::pa
         })
         .map_err(|e| ErrorKind::Runtime(format!("cannot start a thread for {ms_path}: {e}")))?;
     done_rx.recv().unwrap_or_else(|_| Err(Error::load(ms_path, "the loading thread died")))?;
-    // Name the thread after the ocf object name once known (visible in gdb / top -H).
     rt.diag.info(&format!("loaded {} as `{}` (oid {:08x})", slot.bin, slot.name(), slot.oid));
     Ok(())
+}
+
+/// Names the calling thread after its object (shown by gdb, `top -H`, `ps -L`).
+fn name_thread(name: &str) {
+    let short: String = name.chars().take(15).collect();
+    if let Ok(c) = CString::new(short) {
+        unsafe { libc::pthread_setname_np(libc::pthread_self(), c.as_ptr()) };
+    }
 }
 
 /// Runs one life-cycle hook as a call and reports a non-success status.

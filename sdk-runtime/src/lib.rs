@@ -20,6 +20,7 @@ mod crash;
 pub mod design;
 pub mod error;
 pub mod host_api;
+mod interpose;
 pub mod loader;
 pub mod ms;
 pub mod object;
