@@ -2,7 +2,7 @@
 //! gcc-3.3-era AIBO code build unmodified (object-model 5.5, legacy-code 1).
 use std::ffi::OsString;
 use std::path::PathBuf;
-use std::process::Command;
+use std::process::{Command, Stdio};
 
 use crate::error::{Error, ErrorKind};
 
@@ -46,7 +46,20 @@ pub(crate) fn run(lang: Lang, args: Vec<OsString>) -> Result<i32, Error> {
         Lang::C => ("OPENR_HOST_CC", "gcc"),
     };
     let exe = host_tool(default, &[env])?;
-    exec(Command::new(exe).args(host_flags(lang, &args)).args(args))
+    // stderr is read so that errors gcc 3.3 did not make get an explanation; everything
+    // else (stdout, exit status) is the host compiler's own.
+    let mut cmd = Command::new(exe);
+    cmd.args(host_flags(lang, &args)).args(args).stderr(Stdio::piped());
+    let out = cmd.spawn().and_then(|c| c.wait_with_output()).map_err(|e| Error::io(PathBuf::from(cmd.get_program()), e))?;
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    eprint!("{stderr}");
+    if !out.status.success() {
+        let cwd = std::env::current_dir().unwrap_or_default();
+        for note in crate::legacy_notes::notes(&stderr, &cwd) {
+            eprintln!("{note}");
+        }
+    }
+    Ok(out.status.code().unwrap_or(1))
 }
 
 /// Finds a host tool: the first set variable of `env_overrides`, else `name` in PATH.

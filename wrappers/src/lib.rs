@@ -16,6 +16,7 @@ mod compile;
 mod error;
 mod gzcp;
 pub mod install;
+mod legacy_notes;
 pub mod mkbin;
 pub mod ocf;
 mod root;

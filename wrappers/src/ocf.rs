@@ -37,7 +37,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Ocf, Error> {
     // 7-value form, or the 14-value form whose last six fields match the short form's.
     let v: [&str; 7] = match values.len() {
         7 => values[..].try_into().unwrap(),
-        14 => [values[0], values[7], values[8], values[10], values[11], values[12], values[13]],
+        14 => [values[0], values[6], values[7], values[10], values[11], values[12], values[13]],
         n => {
             return Err(err(
                 first_line,

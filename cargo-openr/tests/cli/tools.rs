@@ -179,3 +179,13 @@ fn a_tool_outside_an_sdk_root_says_so() {
     assert!(!ok);
     assert!(log.contains("mkbin: cannot find the SDK root"), "{log}");
 }
+
+#[test]
+fn compiler_wrapper_explains_what_only_gcc_3_3_accepted() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("Old.cc"), "struct A { void m(int a, int a); };\nint g()\n{\n    for (int i = 0; i < 3; i++) {}\n    return i;\n}\n").unwrap();
+    let (ok, log) = run(Command::new(tool("bin/mipsel-linux-g++")).args(["-c", "Old.cc"]).current_dir(dir.path()));
+    assert!(!ok);
+    assert!(log.contains("Old.cc:1:") && log.contains("note: [cargo-openr] gcc 3.3 accepted the same parameter name twice"), "{log}");
+    assert!(log.contains("Old.cc:5:") && log.contains("note: [cargo-openr] `i` is declared in an earlier `for` statement"), "{log}");
+}

@@ -1,0 +1,89 @@
+//! What `-fpermissive` cannot make g++ 12 accept from gcc-3.3-era code (legacy-code 1):
+//! the compiler's error stays as it is, and a `note:` line with the same file:line says
+//! why it compiled on the robot toolchain and what to change.
+use std::path::Path;
+
+/// Notes for the diagnostics in `stderr` (g++'s `file:line:col: error: …` lines).
+pub fn notes(stderr: &str, cwd: &Path) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for line in stderr.lines() {
+        let Some((loc, msg)) = line.split_once(": error: ") else { continue };
+        let note = if msg.contains("need \u{2018}typename\u{2019} before") || msg.contains("need 'typename' before") {
+            Some("gcc 3.3 accepted a dependent type without `typename` (implicit typename, removed in gcc 3.4); g++ 12 cannot: add `typename` before it".to_string())
+        } else if msg.starts_with("redefinition of") && is_parameter_redefinition(loc, cwd) {
+            Some("gcc 3.3 accepted the same parameter name twice in one declaration; g++ 12 cannot: rename one of the parameters".to_string())
+        } else if let Some(name) = undeclared_name(msg) {
+            declared_in_earlier_for(loc, &name, cwd).then(|| {
+                format!("`{name}` is declared in an earlier `for` statement: gcc 3.3's old for-scope rule kept it visible after the loop; g++ 12 has no switch for that: declare `{name}` before the loop")
+            })
+        } else {
+            None
+        };
+        if let Some(n) = note {
+            let text = format!("{loc}: note: [cargo-openr] {n}");
+            if !out.contains(&text) {
+                out.push(text);
+            }
+        }
+    }
+    out
+}
+
+/// `‘i’ was not declared in this scope` → `i`.
+fn undeclared_name(msg: &str) -> Option<String> {
+    let rest = msg.strip_suffix(" was not declared in this scope")?;
+    let name = rest.trim_matches(|c| c == '\u{2018}' || c == '\u{2019}' || c == '\'');
+    (!name.is_empty() && name.chars().all(|c| c.is_alphanumeric() || c == '_')).then(|| name.to_string())
+}
+
+/// The source line of a `file:line:col` location.
+fn source_line(loc: &str, cwd: &Path) -> Option<(Vec<String>, usize)> {
+    let mut parts = loc.rsplitn(3, ':');
+    let _col = parts.next()?;
+    let line: usize = parts.next()?.parse().ok()?;
+    let file = parts.next()?;
+    let text = std::fs::read_to_string(cwd.join(file)).ok()?;
+    Some((text.lines().map(str::to_string).collect(), line))
+}
+
+fn is_parameter_redefinition(loc: &str, cwd: &Path) -> bool {
+    // g++ reports it inside a parameter list: the line has '(' before the column.
+    source_line(loc, cwd).is_some_and(|(lines, n)| lines.get(n - 1).is_some_and(|l| l.contains('(')))
+}
+
+fn declared_in_earlier_for(loc: &str, name: &str, cwd: &Path) -> bool {
+    let Some((lines, n)) = source_line(loc, cwd) else { return false };
+    let start = n.saturating_sub(60);
+    lines[start..n.min(lines.len())].iter().any(|l| {
+        let l: String = l.split_whitespace().collect::<Vec<_>>().join(" ");
+        l.find("for (").or_else(|| l.find("for(")).is_some_and(|i| {
+            let head = &l[i..];
+            let decl = head.split(';').next().unwrap_or("");
+            decl.split(|c: char| !(c.is_alphanumeric() || c == '_')).any(|w| w == name) && decl.contains('=')
+        })
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn explains_what_gcc_3_3_accepted() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(
+            dir.path().join("a.cc"),
+            "template <class T> void f() { Box<T>::value_type x; }\nint g() {\n  for (int i = 0; i < 3; i++) {}\n  return i;\n}\nstruct A { void m(int a, int a); };\n",
+        )
+        .unwrap();
+        let err = "a.cc:1:31: error: need \u{2018}typename\u{2019} before \u{2018}Box<T>::value_type\u{2019}\n\
+                   a.cc:4:10: error: \u{2018}i\u{2019} was not declared in this scope\n\
+                   a.cc:6:30: error: redefinition of \u{2018}int a\u{2019}\n\
+                   a.cc:6:1: error: \u{2018}zz\u{2019} was not declared in this scope\n";
+        let n = notes(err, dir.path());
+        assert_eq!(n.len(), 3, "{n:#?}");
+        assert!(n[0].starts_with("a.cc:1:31: note: [cargo-openr] gcc 3.3 accepted a dependent type without `typename`"));
+        assert!(n[1].starts_with("a.cc:4:10: note: [cargo-openr] `i` is declared in an earlier `for` statement"));
+        assert!(n[2].starts_with("a.cc:6:30: note: [cargo-openr] gcc 3.3 accepted the same parameter name twice"));
+    }
+}
