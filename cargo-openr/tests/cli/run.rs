@@ -28,6 +28,25 @@ fn hand_written_stub_hello_world_runs_its_life_cycle() {
 }
 
 #[test]
+fn osysdebug_lines_appear_when_built_with_openr_debug() {
+    let p = build("hello");
+    // What a user does: uncomment the Makefile's `#CXXFLAGS+= -DOPENR_DEBUG`, rebuild.
+    let mk = p.dir.path().join("hello/HelloWorld/Makefile");
+    let text = fs::read_to_string(&mk).unwrap().replace("#CXXFLAGS+= -DOPENR_DEBUG", "CXXFLAGS+= -DOPENR_DEBUG");
+    fs::write(&mk, text).unwrap();
+    let (ok, log) = crate::support::run(std::process::Command::new("make")
+        .arg(format!("OPENRSDK_ROOT={}", crate::support::sdk_root().display()))
+        .args(["clean", "install"])
+        .current_dir(p.dir.path().join("hello")));
+    assert!(ok, "{log}");
+    let out = run_ms(&p.ms(), &["--for", "1s"]);
+    assert_ok(&out);
+    let order = ["HelloWorld::DoInit()", "HelloWorld::DoStart()", "!!! Hello World !!!", "Bye Bye ...", "HelloWorld::DoDestroy()"];
+    let at: Vec<usize> = order.iter().map(|n| line_of(&out, n)).collect();
+    assert!(at.windows(2).all(|w| w[0] < w[1]), "life cycle order {order:?}:\n{}", out.stdout);
+}
+
+#[test]
 fn stubgen_hello_world_runs_its_life_cycle() {
     let p = build("hello-stubgen");
     let out = run_ms(&p.ms(), &["--for", "1s"]);
