@@ -8,6 +8,7 @@
 // several frames, the newest one last.
 //
 
+#include <stdio.h>
 #include <OPENR/OPENRAPI.h>
 #include <OPENR/OUnits.h>
 #include <OPENR/OSyslog.h>
@@ -76,21 +77,26 @@ Sensors::Notify(const ONotifyEvent& event)
     if (numPrints < MAX_PRINTS && numNotify % PRINT_EVERY == 0) {
         numPrints++;
 
-        int newest = -1;
-        OSYSPRINT(("Sensors : frame"));
+        //
+        // Build the whole line first: one OSYSPRINT is printed in one
+        // piece, even while other objects print at the same time.
+        //
+        char line[128];
+        char* p = line;
+        p += sprintf(p, "Sensors : frame");
         for (int i = 0; i < NUM_WATCHED_JOINTS; i++) {
             int idx = sensorIndex[i];
             if (idx < 0) continue;
 
             OSensorFrameInfo* info = sensorVec->GetInfo(idx);
             OSensorFrameData* data = sensorVec->GetData(idx);
-            newest = info->numFrames - 1;
+            int newest = info->numFrames - 1;     // the last frame is the newest
             OJointValue* jval = (OJointValue*)&data->frame[newest];
 
-            if (i == 0) OSYSPRINT((" %u LF", (unsigned int)(info->frameNumber + newest)));
-            OSYSPRINT((" J%d %d", i + 1, (int)degrees(jval->value / 1000000.0)));
+            if (i == 0) p += sprintf(p, " %u LF", (unsigned int)(info->frameNumber + newest));
+            p += sprintf(p, " J%d %d", i + 1, (int)degrees(jval->value / 1000000.0));
         }
-        OSYSPRINT((" deg\n"));
+        OSYSPRINT(("%s deg\n", line));
     }
     numNotify++;
 
