@@ -44,7 +44,8 @@ extern "C" {
     __attribute__((visibility("default"), used))                            \
     void ENTRYNAME(void* openr_entry_msg)                                    \
     {                                                                        \
-        ((void (*)(void*))(FUNNAME))(openr_entry_msg);                       \
+        void (*openr_entry_fn)(void*) = (void (*)(void*))(FUNNAME);          \
+        openr_entry_fn(openr_entry_msg);                                     \
     }                                                                        \
     void ENTRYNAME(void* openr_entry_msg)
 
