@@ -93,6 +93,35 @@ fn one_class_loaded_as_several_objects_fans_out_and_in() {
 }
 
 #[test]
+fn a_producer_outrunning_its_consumer_hits_the_queue_limit() {
+    let p = build("objcomm-buffer");
+    let out = run_ms(&p.ms(), &["--for", "2s"]);
+    assert_ok(&out);
+    let statuses: Vec<&str> = out.lines_starting("Producer : SetData").iter().map(|l| l.rsplit(' ').next().unwrap()).collect();
+    assert_eq!(statuses, ["0", "0", "0", "0", "0", "25", "25", "25"], "2.8.3: a 10-entry queue holds 5 units; then oOVERFLOW\n{}", out.stdout);
+    assert_eq!(out.lines_starting("Consumer :"), ["Consumer : NumOfData 5 NumOfNotify 5 : 4 5 6 7 8"], "oldest units dropped, the rest in one notification");
+    assert_eq!(
+        out.lines_starting("Producer : Ready"),
+        ["Producer : Ready ASSERT references 1 1 1 2 2 2 2 2", "Producer : Ready ASSERT references 1 1 1 1 1 1 1 1"],
+        "dropped regions lose the queue's reference at once, delivered ones when the observer asserts again\n{}",
+        out.stdout
+    );
+}
+
+#[test]
+fn uncompressed_objects_load_too() {
+    let p = build("hello");
+    let bin = p.ms().join("OPEN-R/MW/OBJS/HELLO.BIN");
+    let gz = fs::read(&bin).unwrap();
+    let mut elf = Vec::new();
+    std::io::Read::read_to_end(&mut flate2::read::GzDecoder::new(&gz[..]), &mut elf).unwrap();
+    fs::write(&bin, elf).unwrap();
+    let out = run_ms(&p.ms(), &["--for", "500ms"]);
+    assert_ok(&out);
+    assert!(out.stdout.contains("!!! Hello World !!!"));
+}
+
+#[test]
 fn robot_design_selects_sections_and_reads_design_data() {
     let p = build("robot-design");
     let out = run_ms(&p.ms(), &["--for", "1s"]);
