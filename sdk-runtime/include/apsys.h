@@ -13,18 +13,22 @@
 
 #ifdef __cplusplus
 
-template <class T>
-inline void openr_gen_entry_call(void (*f)(T*), void* msg)
+/* Call FUNNAME with the message pointer converted to its parameter type
+   (OReasonMessage*, OControlMessage*, InitInfo*, void* ...). */
+template <class R, class T>
+inline void openr_gen_entry_call(R (*f)(T*), void* msg)
 {
     f(static_cast<T*>(msg));
 }
 
-inline void openr_gen_entry_call(void (*f)(void*), void* msg)
+template <class R>
+inline void openr_gen_entry_call(R (*f)(void*), void* msg)
 {
     f(msg);
 }
 
-inline void openr_gen_entry_call(void (*f)(), void*)
+template <class R>
+inline void openr_gen_entry_call(R (*f)(), void*)
 {
     f();
 }

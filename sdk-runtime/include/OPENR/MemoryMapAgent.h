@@ -17,7 +17,9 @@ public:
     void    DetachAll();
 
 private:
-    std::map<MemoryRegionID, void*> regions_;
+    /* Host: one address space, so a region needs no mapping; every lookup asks the
+       runtime's region table (no cache, so retired regions leave nothing behind). */
+    std::map<MemoryRegionID, void*> attached_;   /* regions attached explicitly */
 };
 
 #endif /* _MemoryMapAgent_h_DEFINED */

@@ -103,6 +103,18 @@ const OFatal ofatalORB          = 2;
 typedef longword ODesignDataID;
 const ODesignDataID odesigndataID_UNDEF = 0xffffffff;
 
+/* reserved design-data keyword: FindDesignData() returns an OCPUInfo */
+const char* const odesignkeywordCPUINFO = "SYS_CPUINFO";
+
+struct OCPUInfo {
+    longword sclk;           /* system clock, Hz */
+    longword pclk;           /* pipeline clock, Hz */
+    longword processorID;
+    byte     reserved[244];
+};
+
+OPENR_STATIC_CHECK(sizeof(OCPUInfo) == 256, OCPUInfo_256);
+
 typedef longword OPrimitiveID;
 const OPrimitiveID oprimitiveID_UNDEF = 0xffffffff;
 

@@ -11,16 +11,6 @@
 #include <OPENR/OPower.h>
 #include <OPENR/MWInformationTypes.h>
 
-/* result of FindDesignData("SYS_CPUINFO", ...) */
-struct OCPUInfo {
-    longword sclk;           /* system clock, Hz */
-    longword pclk;           /* pipeline clock, Hz */
-    longword processorID;
-    byte     reserved[244];
-};
-
-OPENR_STATIC_CHECK(sizeof(OCPUInfo) == 256, OCPUInfo_256);
-
 namespace OPENR {
 
 /* primitives */

@@ -56,7 +56,7 @@ private:
     offset_t       offset_;
     char*          base_;
     size_t         size_;
-    ShmHdr*        shmHdr_;    /* allocation record when SELF_ALLOCATED */
+    bool           hostRef_;   /* holds a reference on the host region memID_ */
 };
 
 typedef RCRegion RCRegionBase;
