@@ -175,6 +175,53 @@ if "$CXX" "${CXXFLAGS[@]}" -dM -E -I"$WORK/stubgen" "${INCS[@]}" "$WORK/macros.c
     echo "FAIL: a header defines a MIPS marker macro"
 fi
 
+# transitive visibility that real programs rely on (object-model 6 rules 2-4)
+echo "== 2b. transitive visibility"
+vis() {   # vis NAME HEADER BODY [extra flags]
+    local name=$1 hdr=$2 body=$3; shift 3
+    printf '#include <%s>\nint openr_vis_%s()\n{\n%s\n    return 0;\n}\n' "$hdr" "$name" "$body" \
+        > "$WORK/vis_$name.cc"
+    run "visibility: $name ($hdr)" "$CXX" "${CXXFLAGS[@]}" "$@" -fsyntax-only -I"$WORK/stubgen" "${INCS[@]}" \
+        "$WORK/vis_$name.cc"
+}
+vis OObject OPENR/OObject.h '
+    OReasonMessage rm(oreasonBOOT);
+    OSystemEvent ev(rm.reason, rm.param, rm.paramSize);
+    OPowerStatusMessage pm; pm.powerStatus.Set(orsbALL, obsbALL, 0, 0, 0, 0);
+    ONotifyEvent ne; OReadyMessage rdy; OControlMessage cm; OConnectMessage com;
+    OReadyEvent re(0, rdy.observerID, rdy.command);
+    OConnectEvent ce(0, com.subName, com.command);
+    RCRegion* r = ne.RCData(0);
+    MemoryRegionID id; void* base;
+    if (NewSharedMemoryRegion(4096, MEMPROTINFO_R, &id, &base) != sSUCCESS) return 1;
+    DeleteRegion(malloc(4));
+    OSYSPRINT(("%d %d %p %d\n", (int)strlen("x"), isdigit(0x31), (void*)r, atoi("1")));
+    printf("%s", ev.Param() ? "" : ""); (void)re; (void)ce; (void)cm;
+    cout << endl;
+    list<int> l;'
+vis OSubject OPENR/OSubject.h '
+    RCRegion* r = 0; ONotifyEvent ne; OReadyEvent re(0, ObserverID(), objcommCMD_ASSERT_READY);
+    OSubject s; s.SetData(r); ObserverConstIterator it = s.begin(); (void)it; (void)ne; (void)re;'
+vis OObserver OPENR/OObserver.h '
+    OObserver o; ONotifyEvent ne; o.AssertReady(ne.SenderID()); RCRegion* r = ne.RCData(0);
+    SubjectConstIterator it = o.begin(); (void)it; (void)r;'
+vis OPENRAPI OPENR/OPENRAPI.h '
+    OPowerStatus ps; OPENR::GetPowerStatus(&ps);
+    OPrimitiveControl_SpeakerVolume vol(ospkvol25dB); MWIID m = mwiidINVALID;
+    OCommandVectorData* v = 0; MemoryRegionID id; OPENR::NewCommandVectorData(1, &id, &v);
+    OBootCondition bc(obcbPAUSE_SW); OTime t; OCPUInfo cpu; (void)vol; (void)m; (void)bc; (void)t; (void)cpu;'
+vis OFbkImage OPENR/OFbkImage.h '
+    OFbkImageVectorData* v = 0; OFbkImage im(v->GetInfo(ofbkimageLAYER_H), v->GetData(0), ofbkimageBAND_Y);
+    (void)im; OCommandVectorData* c = 0; (void)c;'
+vis ant ant.h '
+    antStackRef ref("IPStack"); antEnvCreateSharedBufferMsg m(512); m.Call(ref, sizeof(m));
+    antSharedBuffer b = m.buffer; b.Map(); void* p = b.GetAddress(); (void)p; Return();'
+vis debug OPENR/ODebug.h '
+    ODEBUG(printf("x")); DPRINTF(("%d", 1)); DPRINTF2(1, ("%d", 2)); PRINTF(("%d", 3));' -DOPENR_DEBUG
+vis syslog OPENR/OSyslog.h '
+    OSYSDEBUG(("%d", 1)); OSYSLOG4((osyslogINFO, "%d", 4)); OSYSLOG1((osyslogERROR, "x"));' \
+    -DOPENR_DEBUG -DSYSMSGSHOW=1
+
 # ---------------------------------------------------------------------------
 # 3. sample-shaped programs
 # ---------------------------------------------------------------------------
