@@ -33,7 +33,9 @@ static const int NUM_FAULTS = sizeof(faultName) / sizeof(faultName[0]);
 static void
 null_pointer_write()
 {
-    int* volatile p = 0;
+    // Both volatile: the compiler may neither assume the pointer is
+    // NULL nor drop the store.
+    volatile int* volatile p = 0;
     *p = 0x1234;                // TLB miss (store) on the robot, SIGSEGV on a PC
 }
 

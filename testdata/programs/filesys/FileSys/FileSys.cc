@@ -78,7 +78,7 @@ FileSys::DoDestroy(const OSystemEvent& event)
 void
 FileSys::Result(const char* step, bool ok)
 {
-    OSYSPRINT(("FileSys : %-28s %s\n", step, ok ? "ok" : "FAILED"));
+    OSYSPRINT(("FileSys : %-31s %s\n", step, ok ? "ok" : "FAILED"));
 }
 
 void
