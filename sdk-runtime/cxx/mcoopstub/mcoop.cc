@@ -79,7 +79,7 @@ sError SendWithRBox(OID dest, Selector meth, void* msg, size_t size, RID* rbox)
 {
     const openr_host_api* api = openr_host();
     if (api == 0) return sFAIL;
-    std::vector<char> answer(4096);
+    std::vector<char> answer(65536);
     size_t got = 0;
     int rc = api->call(dest.GetAddress(), meth, msg, size, &answer[0], answer.size(), &got, 0);
     if (rc == 0 && got > answer.size()) {
