@@ -109,6 +109,38 @@ fn a_producer_outrunning_its_consumer_hits_the_queue_limit() {
 }
 
 #[test]
+fn a_subject_connected_to_its_own_object_and_kernel_calls_work() {
+    let p = build("objcomm-self");
+    let out = run_ms(&p.ms(), &["--for", "1s"]);
+    assert_ok(&out);
+    let talk: Vec<&str> = out.lines_starting("SelfTalk : ").into_iter().filter(|l| l.contains("Ready") || l.contains("Notify")).collect();
+    assert_eq!(
+        talk,
+        [
+            "SelfTalk : Ready ASSERT (IsReady 1)",
+            "SelfTalk : Notify self #1 (NumOfData 1)",
+            "SelfTalk : Ready ASSERT (IsReady 1)",
+            "SelfTalk : Notify self #2 (NumOfData 1)",
+            "SelfTalk : Ready ASSERT (IsReady 1)",
+        ],
+        "2.8.1 step 6: self connection without deadlock\nstderr:\n{}",
+        out.stderr
+    );
+    for line in [
+        "SelfTalk : RFC2822 Sat, 1 Jan 2000 09:00:00 +0900",
+        "SelfTalk : Sprint Mon Jan 01 00:00:00 2001",
+        "SelfTalk : round trip ok",
+        "SelfTalk : Wait ok",
+        "SelfTalk : shared memory ok",
+    ] {
+        assert!(out.stdout.lines().any(|l| l == line), "missing {line:?}:\n{}", out.stdout);
+    }
+    assert!(out.stdout.contains("SelfTalk : timer fired"), "SetTimeEvent delivered:\n{}", out.stdout);
+    let long = out.stdout.lines().find(|l| l.starts_with("[oid:80000040,prio:1] xxx")).expect("OSYSLOG1 line");
+    assert_eq!(long.len() - "[oid:80000040,prio:1] ".len(), 243, "osyslogMAX_SIZE truncation (4.2)");
+}
+
+#[test]
 fn uncompressed_objects_load_too() {
     let p = build("hello");
     let bin = p.ms().join("OPEN-R/MW/OBJS/HELLO.BIN");
