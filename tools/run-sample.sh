@@ -12,6 +12,7 @@ exe=$PWD/target/debug/cargo-openr
 root=$("$exe" sdk install --prefix "$PWD/target/openr-sdk")
 work=$PWD/target/samples/$sample
 rm -rf "$work" && mkdir -p "$(dirname "$work")" && cp -r "testdata/programs/$sample" "$work"
-make -s -C "$work" OPENRSDK_ROOT="$root" install
+echo "building $sample with its Makefile (log: $work.log)" >&2
+make -C "$work" OPENRSDK_ROOT="$root" install >"$work.log" 2>&1 || { cat "$work.log" >&2; exit 1; }
 [ $# -gt 0 ] || set -- --for 5s
 exec "$exe" run "$work/MS" "$@"
