@@ -25,6 +25,7 @@ pub mod loader;
 pub mod ms;
 pub mod object;
 pub mod power;
+pub mod robot;
 pub mod runtime;
 pub mod shm;
 mod signals;
