@@ -90,6 +90,8 @@ fn one_class_loaded_as_several_objects_fans_out_and_in() {
     assert_ok(&out);
     let count = |obs: &str| out.lines_starting(&format!("{obs}::Notify()")).len();
     assert_eq!((count("SampleObserver1"), count("SampleObserver2"), count("SampleObserver3")), (2, 2, 4), "stdout:\n{}\nstderr:\n{}", out.stdout, out.stderr);
+    // IsAllReady() counts: SBJ1 waits for all three observers before each send.
+    assert_eq!(out.lines_starting("SampleSubject1 : send"), ["SampleSubject1 : send #1 to 3 observer(s)", "SampleSubject1 : send #2 to 3 observer(s)"]);
 }
 
 #[test]
