@@ -141,6 +141,9 @@ pub struct EffectorFrame {
     pub clamps: Vec<ClampEvent>,
     /// Sync roots released this frame: (root key, timed out).
     pub sync_released: Vec<(u32, bool)>,
+    /// `optional` bytes of the newest vector playing in this frame (robot-api 8.2.6):
+    /// `(optOffset, bytes)`; captured before completed vectors leave their queues.
+    pub optional: Option<(u32, Vec<u8>)>,
 }
 
 /// The effector.
@@ -364,6 +367,7 @@ impl Effector {
             self.targets.insert(a.primitive, a.command);
         }
         out.applied = applied;
+        out.optional = self.current_optional().map(|(o, b)| (o, b.to_vec()));
         // 6. completion
         for (&conn, q) in self.queues.iter_mut() {
             let done = match q.front() {
@@ -589,10 +593,11 @@ mod tests {
         b[69] = 0xCD;
         e.enqueue(1, &parse_command_vector(&b).unwrap(), 1);
         assert_eq!(e.current_optional(), None);
-        e.step(1, 1, &mut s);
+        assert_eq!(e.step(1, 1, &mut s).optional, Some((4, vec![0xAB, 0xCD])));
         assert_eq!(e.current_optional(), Some((4, &[0xAB, 0xCD][..])));
-        e.step(2, 2, &mut s);
+        assert_eq!(e.step(2, 2, &mut s).optional, Some((4, vec![0xAB, 0xCD])));
         assert_eq!(e.current_optional(), None);
+        assert_eq!(e.step(3, 3, &mut s).optional, None);
         assert_eq!(e.drop_connection(1), Vec::<Token>::new());
     }
 }

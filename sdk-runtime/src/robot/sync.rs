@@ -87,9 +87,12 @@ impl SyncKeys {
         Ok(k)
     }
 
-    /// `CancelSyncKey`: `key` may be the root or any part; cancels the whole key.
+    /// `CancelSyncKey`: `key` may be the original key or any part; cancels the whole key.
     pub fn cancel(&mut self, key: u32) -> OStatus {
-        let Some(&root) = self.part_root.get(&key) else { return O_INVALID_SYNC_KEY };
+        let root = if self.roots.contains_key(&key) { key } else { *self.part_root.get(&key).unwrap_or(&SYNC_KEY_UNDEF) };
+        if root == SYNC_KEY_UNDEF {
+            return O_INVALID_SYNC_KEY;
+        }
         if let Some(r) = self.roots.remove(&root) {
             for p in r.parts {
                 self.part_root.remove(&p);
