@@ -182,3 +182,48 @@ fn scene_inputs_reach_sensor_values() {
     r.set_trace(false);
     assert!(r.step_frame().trace.is_empty());
 }
+
+#[test]
+fn secondary_designs_run() {
+    for d in [Design::Ers210, Design::Ers220] {
+        let mut r = VirtualRobot::new(d);
+        let ids: Vec<PrimitiveId> = r.model().joints().map(|p| p.id).collect();
+        for id in &ids {
+            let loc = r.model().locator(*id).unwrap();
+            r.open_primitive(loc).unwrap();
+        }
+        r.set_motor_power(true);
+        assert_eq!(r.enable_joint_gain(PRIMITIVE_ID_UNDEF), O_SUCCESS);
+        r.submit_command(1, &joint_vector(ids[0], &[oradians(-10.0); 4])).unwrap();
+        let outs: Vec<FrameOutput> = (0..8).map(|_| r.step_frame()).collect();
+        let v = outs[3].sensor_vector.as_ref().unwrap();
+        assert_eq!(VectorHeader::read(v).unwrap().num_data, 31);
+        assert_eq!(outs.iter().filter(|o| o.mic_due).count(), 2); // 32 ms blocks
+    }
+}
+
+#[test]
+fn garbage_vectors_never_panic() {
+    let mut r = robot();
+    let tilt = r.model().open_primitive("PRM:/r1/c1-Joint2:11").unwrap();
+    let good = joint_vector(tilt, &[0; 16]);
+    let mut seed: u64 = 0x1234_5678;
+    for round in 0..2000 {
+        let mut b = good.clone();
+        for _ in 0..(1 + round % 8) {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            let at = (seed >> 33) as usize % b.len();
+            b[at] = (seed >> 16) as u8;
+        }
+        let cut = if round % 5 == 0 { (seed >> 40) as usize % b.len() } else { b.len() };
+        let _ = r.submit_command(round % 3, &b[..cut]);
+        let _ = parse_sound_vector(&b[..cut]);
+        let _ = read_sensor_entry(&b[..cut], 0);
+        if round % 50 == 0 {
+            r.step_frame();
+        }
+    }
+    for _ in 0..200 {
+        r.step_frame();
+    }
+}
