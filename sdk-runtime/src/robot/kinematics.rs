@@ -7,7 +7,7 @@
 //! motor power is off (LMasterRSlave7 moves limp legs by hand, PIDControl7 records
 //! pwmDuty), and LEDs/ears must keep the state the last command left them in.
 //!
-//! Servo model (deliberately simple, [I]): a joint is *driven* when motor power is on,
+//! Servo model (deliberately simple; an inference, not Sony data): a joint is *driven* when motor power is on,
 //! its gain is enabled and the loaded P gain is non-zero. A driven joint moves toward
 //! its reference by at most `max_speed × 8 ms` per frame (ers7-model 4.8) and stops
 //! exactly on it. `pwmDuty` is a PID of the error expressed in 10-bit signal counts

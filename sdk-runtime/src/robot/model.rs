@@ -235,7 +235,7 @@ impl Gain {
     pub const fn std(p: u16, i: u16, d: u16) -> Gain {
         Gain { p, i, d, p_shift: 0x0E, i_shift: 0x02, d_shift: 0x0F }
     }
-    /// Effective coefficients `GAIN / 2^(16 − SHIFT)` (robot-api 11, [T3]).
+    /// Effective coefficients `GAIN / 2^(16 − SHIFT)` (robot-api 11, third-party source).
     pub fn coefficients(&self) -> (f64, f64, f64) {
         let f = |g: u16, s: u16| g as f64 / 2f64.powi(16 - s.min(16) as i32);
         (f(self.p, self.p_shift), f(self.i, self.i_shift), f(self.d, self.d_shift))

@@ -8,7 +8,7 @@
 //! accelerometer); a virtual robot must give physically sensible values without a
 //! physics engine.
 //!
-//! Model ([I], ers7-model 5 and 12 for units and dimensions):
+//! Model (inferred; ers7-model 5 and 12 for units and dimensions):
 //! * Leg geometry in the body's side plane: upper link 69.5 mm, lower link 71.5 mm
 //!   (front) / 76.5 mm (rear); J1 = 0 points the upper link straight down, positive
 //!   swings it forward; the lower link is at J1 + J3; abduction J2 shortens the
