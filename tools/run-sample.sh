@@ -15,4 +15,4 @@ rm -rf "$work" && mkdir -p "$(dirname "$work")" && cp -r "testdata/programs/$sam
 echo "building $sample with its Makefile (log: $work.log)" >&2
 make -C "$work" OPENRSDK_ROOT="$root" install >"$work.log" 2>&1 || { cat "$work.log" >&2; exit 1; }
 [ $# -gt 0 ] || set -- --for 5s
-exec "$exe" run "$work/MS" "$@"
+exec "$exe" run --sdk "$root" "$work/MS" "$@"

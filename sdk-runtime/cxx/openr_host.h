@@ -138,7 +138,76 @@ struct openr_host_api {
     void (*set_motor_power)(int on);
     /* OPENR::Shutdown: begins the Stop/Destroy sequence. */
     void (*shutdown)(void);
+
+    /* ---- the virtual robot: OPENRAPI.h primitives, gains, vectors (robot-api 4) ----
+     * Every call returns an OStatus value. */
+    unsigned int (*open_primitive)(const char* locator, unsigned int* id);
+    unsigned int (*close_primitive)(unsigned int id);
+    unsigned int (*control_primitive)(unsigned int id, unsigned int request, const void* param,
+                                      size_t param_size, void* result, size_t result_size);
+    /* `op`: OPENR_GAIN_*; `gains` = {P, I, D, P shift, I shift, D shift}, read or written. */
+    unsigned int (*joint_gain)(int op, unsigned int id, unsigned short* gains);
+    /* Fills a 16-byte OJointValue / OSensorValue with the newest reading. */
+    unsigned int (*joint_value)(unsigned int id, void* value16);
+    unsigned int (*sensor_value)(unsigned int id, void* value16);
+    /* `op`: OPENR_SYNC_NEW (key out in *k1), _CANCEL (key), _DIVIDE (key -> *k1, *k2). */
+    unsigned int (*sync_key)(int op, unsigned int key, unsigned int* k1, unsigned int* k2);
+    /* Allocates a data vector initialised exactly as robot-api 6 says (OPENR_VECTOR_*;
+     * `n` slots, `data_size` per sound slot); one reference, freed by delete_vector. */
+    unsigned int (*new_vector)(int kind, size_t n, size_t data_size, unsigned int* mem_id, void** base);
+    unsigned int (*delete_vector)(unsigned int mem_id);
+    unsigned int (*set_cdt)(unsigned int mem_id);
+    /* set != 0: store *value; else read it (0..3). */
+    unsigned int (*volume_switch)(int set, unsigned char* value);
+
+    /* ---- system objects only (OVirtualRobotComm, OVirtualRobotAudioComm) ---- */
+    /* The calling object provides `service` (OPENR_VR_*); the runtime sends it
+     * struct openr_vr_event messages at (caller, selector). */
+    unsigned int (*vr_attach)(int service, unsigned int selector);
+    /* A vector arrived at the effector (or speaker) from the subject identified by
+     * (subject_oid, subject_selector): `base`/`size` stay valid until the runtime reports
+     * OPENR_VR_DONE for *token.  A malformed vector is refused (non-zero, no token). */
+    unsigned int (*vr_submit)(int service, void* subject_oid, unsigned int subject_selector,
+                              void* base, size_t size, unsigned long long* token);
 };
+
+/* joint_gain ops */
+#define OPENR_GAIN_ENABLE 0
+#define OPENR_GAIN_DISABLE 1
+#define OPENR_GAIN_SET 2
+#define OPENR_GAIN_REGISTER_DEFAULT 3
+#define OPENR_GAIN_SET_DEFAULT 4
+#define OPENR_GAIN_GET 5
+#define OPENR_GAIN_GET_DEFAULT 6
+/* sync_key ops */
+#define OPENR_SYNC_NEW 0
+#define OPENR_SYNC_CANCEL 1
+#define OPENR_SYNC_DIVIDE 2
+/* new_vector kinds */
+#define OPENR_VECTOR_COMMAND 0
+#define OPENR_VECTOR_SOUND 1
+#define OPENR_VECTOR_CDT 2
+#define OPENR_VECTOR_SENSOR 3
+#define OPENR_VECTOR_IMAGE 4
+/* vr services */
+#define OPENR_VR_EFFECTOR 0
+#define OPENR_VR_SENSOR 1
+#define OPENR_VR_IMAGE 2
+#define OPENR_VR_SPEAKER 3
+#define OPENR_VR_MIC 4
+
+/* What the runtime tells a system object (sent to its vr_attach selector). */
+struct openr_vr_event {
+    unsigned int kind;             /* OPENR_VR_DONE or OPENR_VR_DATA */
+    unsigned int service;          /* OPENR_VR_* */
+    unsigned long long token;      /* DONE: the vr_submit token */
+    unsigned int mem_id;           /* DATA: a new vector in shared memory; the event owns
+                                    * one reference, which the receiver must drop
+                                    * (shm_unref) once its RCRegion holds its own */
+    unsigned int size;
+};
+#define OPENR_VR_DONE 1
+#define OPENR_VR_DATA 2
 
 /* Returns the runtime's table, or NULL when the object runs outside cargo-openr. */
 const struct openr_host_api* openr_host(void);

@@ -15,7 +15,7 @@ use crate::loader::{self, Module};
 use crate::ms::MsDir;
 use crate::object::{self, ObjectSlot};
 use crate::power::{Power, PowerState, ORSB_MOTOR_POWER, ORSB_PAUSE};
-use crate::runtime::{Diag, Runtime, FIRST_OID};
+use crate::runtime::{Diag, Runtime, FIRST_OID, FIRST_SYSTEM_OID};
 use crate::shm::ShmTable;
 use crate::timers::Timers;
 
@@ -31,6 +31,10 @@ pub struct RunOptions {
     /// Skip CONNECT.CFG lines naming unregistered services with a warning, as the robot
     /// does, instead of failing.
     pub lenient_connect: bool,
+    /// System objects (`OVirtualRobotComm`, …) to load before the user objects.
+    pub system_objects: Vec<PathBuf>,
+    /// Write the virtual robot's JSON-lines trace here.
+    pub trace: Option<PathBuf>,
 }
 
 /// How a run ended.
@@ -64,6 +68,14 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
     let design_db = cfg::design_db(&ms, &opts.design)?;
     // Read every image before starting anything, so a bad .BIN fails the run cleanly.
     let images: Vec<Vec<u8>> = objects.iter().map(|o| loader::read_bin(&o.host_path)).collect::<Result<_>>()?;
+    let system_images: Vec<Vec<u8>> = opts.system_objects.iter().map(|p| loader::read_bin(p)).collect::<Result<_>>()?;
+    let robot = crate::robot::VirtualRobot::from_design_name(&opts.design).ok_or_else(|| {
+        ErrorKind::Runtime(format!("unknown robot design `{}` (known: ERS-7, ERS-210, ERS-220)", opts.design))
+    })?;
+    let trace = match &opts.trace {
+        Some(p) => Some(std::fs::File::create(p).map_err(|e| Error::io(p, e))?),
+        None => None,
+    };
 
     let signals = crate::signals::block_termination()?;
     crate::crash::install();
@@ -86,6 +98,8 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
         diag: opts.diag,
         shutdown_requested: AtomicBool::new(false),
         timers: Timers::new(),
+        vr: crate::vr::VrService::new(robot, trace),
+        vectors: Mutex::new(Vec::new()),
     });
     std::thread::Builder::new()
         .name("openr-timers".into())
@@ -95,8 +109,12 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
         .map_err(|e| ErrorKind::Runtime(format!("cannot start the timer thread: {e}")))?;
 
     let scratch = tempdir()?;
+    for (i, (path, image)) in opts.system_objects.iter().zip(system_images).enumerate() {
+        let label = format!("/SYSTEM/OBJS/{}", path.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned()));
+        load_object(rt, FIRST_SYSTEM_OID + i, &label, path, image, &scratch.0)?;
+    }
     for (i, (entry, image)) in objects.iter().zip(images).enumerate() {
-        load_object(rt, i, &entry.ms_path, &entry.host_path, image, &scratch.0)
+        load_object(rt, FIRST_OID + i, &entry.ms_path, &entry.host_path, image, &scratch.0)
             .map_err(|e| with_cfg_line(e, &object_cfg_path, entry.line))?;
     }
     let all = rt.all_objects();
@@ -106,6 +124,10 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
         hook(rt, slot, SEL_INIT, OREASON_BOOT, None)?;
     }
     connect_all(rt, &connect_path, &connections, opts.lenient_connect)?;
+    std::thread::Builder::new()
+        .name("openr-robot".into())
+        .spawn(move || crate::vr::run_frames(rt))
+        .map_err(|e| ErrorKind::Runtime(format!("cannot start the robot thread: {e}")))?;
     for slot in &all {
         // Start is not awaited: a DoStart may block (on console input, say).
         let module = slot.module.get().expect("loaded");
@@ -122,6 +144,7 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
             }
         }
     }
+    rt.vr.flush_trace();
     unsafe { libc::fflush(std::ptr::null_mut()) };
     Ok(ended)
 }
@@ -158,11 +181,12 @@ fn with_cfg_line(e: Error, cfg: &std::path::Path, line: usize) -> Error {
 
 /// Starts the object's thread, which loads the module (static constructors run there)
 /// and then serves messages.
-fn load_object(rt: &'static Runtime, index: usize, ms_path: &str, host: &std::path::Path, image: Vec<u8>, scratch: &std::path::Path) -> Result<()> {
+fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path::Path, image: Vec<u8>, scratch: &std::path::Path) -> Result<()> {
     let (tx, rx) = mpsc::channel();
+    let index = rt.objects.read().unwrap_or_else(|p| p.into_inner()).len();
     let slot = Arc::new(ObjectSlot {
         index,
-        oid: FIRST_OID + index,
+        oid,
         bin: ms_path.to_string(),
         module: OnceLock::new(),
         tx,

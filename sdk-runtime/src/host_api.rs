@@ -46,6 +46,19 @@ pub struct HostApi {
     observe_power: unsafe extern "C" fn(*mut c_void, u32, *const PowerState) -> u32,
     set_motor_power: extern "C" fn(i32),
     shutdown: extern "C" fn(),
+    open_primitive: unsafe extern "C" fn(*const c_char, *mut u32) -> u32,
+    close_primitive: extern "C" fn(u32) -> u32,
+    control_primitive: unsafe extern "C" fn(u32, u32, *const c_void, usize, *mut c_void, usize) -> u32,
+    joint_gain: unsafe extern "C" fn(i32, u32, *mut u16) -> u32,
+    joint_value: unsafe extern "C" fn(u32, *mut c_void) -> u32,
+    sensor_value: unsafe extern "C" fn(u32, *mut c_void) -> u32,
+    sync_key: unsafe extern "C" fn(i32, u32, *mut u32, *mut u32) -> u32,
+    new_vector: unsafe extern "C" fn(i32, usize, usize, *mut u32, *mut *mut c_void) -> u32,
+    delete_vector: extern "C" fn(u32) -> u32,
+    set_cdt: extern "C" fn(u32) -> u32,
+    volume_switch: unsafe extern "C" fn(i32, *mut u8) -> u32,
+    vr_attach: extern "C" fn(i32, u32) -> u32,
+    vr_submit: unsafe extern "C" fn(i32, *mut c_void, u32, *mut c_void, usize, *mut u64) -> u32,
 }
 
 /// The table objects find with `dlsym(RTLD_DEFAULT, "openr_runtime_api_v1")`; the
@@ -82,6 +95,19 @@ pub static openr_runtime_api_v1: HostApi = HostApi {
     observe_power,
     set_motor_power,
     shutdown,
+    open_primitive: crate::robot_api::open_primitive,
+    close_primitive: crate::robot_api::close_primitive,
+    control_primitive: crate::robot_api::control_primitive,
+    joint_gain: crate::robot_api::joint_gain,
+    joint_value: crate::robot_api::joint_value,
+    sensor_value: crate::robot_api::sensor_value,
+    sync_key: crate::robot_api::sync_key,
+    new_vector: crate::robot_api::new_vector,
+    delete_vector: crate::robot_api::delete_vector,
+    set_cdt: crate::robot_api::set_cdt,
+    volume_switch: crate::robot_api::volume_switch,
+    vr_attach: crate::robot_api::vr_attach,
+    vr_submit: crate::robot_api::vr_submit,
 };
 
 /// Keeps the table alive in the final link (referenced from the boot code).
@@ -356,6 +382,7 @@ unsafe extern "C" fn observe_power(oid: *mut c_void, selector: u32, filter: *con
 
 extern "C" fn set_motor_power(on: i32) {
     if let Some(rt) = rt() {
+        rt.vr.robot().set_motor_power(on != 0);
         crate::boot::update_power(rt, |s| {
             if on != 0 {
                 s.robot_status |= ORSB_MOTOR_POWER;

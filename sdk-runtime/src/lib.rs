@@ -25,11 +25,13 @@ pub mod loader;
 pub mod ms;
 pub mod object;
 pub mod power;
+pub mod robot_api;
 pub mod robot;
 pub mod runtime;
 pub mod shm;
 mod signals;
 pub mod timers;
+pub mod vr;
 
 pub use error::{Error, ErrorKind, Result};
 

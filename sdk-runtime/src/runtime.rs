@@ -15,6 +15,8 @@ use crate::shm::ShmTable;
 
 /// OID of the first user object; the rest follow in OBJECT.CFG order.
 pub const FIRST_OID: usize = 0x8000_0040;
+/// OID of the first system object (loaded before the user objects).
+pub const FIRST_SYSTEM_OID: usize = 0x8000_0010;
 
 /// A registered service (`OObject::RegisterServiceEntry`).
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -56,6 +58,9 @@ pub struct Runtime {
     pub power: Power,
     pub diag: Diag,
     pub timers: crate::timers::Timers,
+    pub vr: crate::vr::VrService,
+    /// Data vectors handed out by `new_vector` (freed by `delete_vector`).
+    pub vectors: Mutex<Vec<u32>>,
     pub shutdown_requested: AtomicBool,
 }
 
@@ -83,8 +88,8 @@ impl Runtime {
     }
 
     pub fn object(&self, oid: usize) -> Option<Arc<ObjectSlot>> {
-        let idx = oid.checked_sub(FIRST_OID)?;
-        self.objects.read().unwrap_or_else(|p| p.into_inner()).get(idx).cloned()
+        // A handful of objects: a scan beats hashing.
+        self.objects.read().unwrap_or_else(|p| p.into_inner()).iter().find(|s| s.oid == oid).cloned()
     }
 
     pub fn all_objects(&self) -> Vec<Arc<ObjectSlot>> {

@@ -3,6 +3,7 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use anyhow::Context;
+use openr_wrappers::install;
 use sdk_runtime::boot::{self, Ended, RunOptions};
 use sdk_runtime::runtime::Diag;
 
@@ -22,6 +23,12 @@ pub struct Args {
     /// Skip CONNECT.CFG lines that name unknown services (the robot's behaviour) instead of failing
     #[arg(long)]
     lenient_connect: bool,
+    /// Write the virtual robot's trace (JSON lines: commands, sensor frames, LEDs) to FILE
+    #[arg(long, value_name = "FILE")]
+    trace: Option<PathBuf>,
+    /// SDK root providing the system objects (default: $OPENRSDK_ROOT if it is a cargo-openr root, else the per-user one, installed on first use)
+    #[arg(long, value_name = "DIR")]
+    sdk: Option<PathBuf>,
     /// No runtime diagnostics on stderr (object output is unaffected)
     #[arg(short, long)]
     quiet: bool,
@@ -51,8 +58,24 @@ pub fn parse_duration(s: &str) -> Result<Duration, String> {
     Ok(Duration::from_secs_f64(v * mult))
 }
 
+/// The SDK root whose system objects this run loads: `--sdk`, else `$OPENRSDK_ROOT` when
+/// it is one of ours, else the per-user default; installed or updated if needed.
+fn sdk_root(explicit: Option<PathBuf>) -> anyhow::Result<PathBuf> {
+    let env = std::env::var_os("OPENRSDK_ROOT").map(PathBuf::from).filter(|p| install::is_sdk_root(p));
+    let root = match explicit.or(env) {
+        Some(p) => p,
+        None => install::default_prefix().context("cannot find a home directory; pass --sdk DIR")?,
+    };
+    let exe = std::env::current_exe().context("cannot locate the cargo-openr executable")?;
+    install::install(&root, &exe).with_context(|| format!("cannot prepare the SDK root {}", root.display()))?;
+    Ok(root)
+}
+
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
+    let root = sdk_root(args.sdk.clone())?;
     let opts = RunOptions {
+        system_objects: install::system_objects(&root),
+        trace: args.trace.clone(),
         ms_dir: args.ms_dir.clone(),
         design: args.design,
         run_for: args.run_for,

@@ -33,8 +33,8 @@ fn build(program: &Path, work: &Path, root: &Path) -> Result<PathBuf> {
     Ok(dst.join("MS"))
 }
 
-fn run_ms(exe: &Path, ms: &Path) -> Result<String> {
-    let out = Command::new(exe).args(["run", "-q", "--for", "120s"]).arg(ms).output()?;
+fn run_ms(exe: &Path, ms: &Path, root: &Path) -> Result<String> {
+    let out = Command::new(exe).args(["run", "-q", "--for", "120s", "--sdk"]).arg(root).arg(ms).output()?;
     if !out.status.success() {
         bail!("running {} failed:\n{}", ms.display(), String::from_utf8_lossy(&out.stderr));
     }
@@ -91,7 +91,7 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path) -> Result<Vec<
     let mut fig = |name: &str, value: f64, unit: &'static str| figs.push(Figure { name: name.into(), value, unit });
 
     let ms = build(&programs.join("pingpong"), work, root)?;
-    let out = run_ms(exe, &ms)?;
+    let out = run_ms(exe, &ms, root)?;
     let f = fields(&out, "BENCH pingpong");
     let get = |k: &str| f.iter().find(|(n, _)| n == k).map(|(_, v)| *v).with_context(|| format!("no {k} in:\n{out}"));
     fig("notify→ready round trip p50 (2 objects)", get("p50_ns")? / 1000.0, "µs");
@@ -104,7 +104,7 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path) -> Result<Vec<
 
     let ms = build(&programs.join("coldstart"), work, root)?;
     let t0 = monotonic_ns();
-    let out = Command::new(exe).args(["run", "-q", "--for", "0.2s"]).arg(&ms).output()?;
+    let out = Command::new(exe).args(["run", "-q", "--for", "0.2s", "--sdk"]).arg(root).arg(&ms).output()?;
     if !out.status.success() {
         bail!("coldstart run failed: {}", String::from_utf8_lossy(&out.stderr));
     }

@@ -108,6 +108,7 @@ pub fn run_ms_signalled(ms: &Path, args: &[&str], signals: &[(std::time::Duratio
     use std::io::Read;
     use std::time::{Duration, Instant};
     let mut child = Command::new(exe())
+        .env("OPENRSDK_ROOT", sdk_root())
         .arg("run")
         .arg(ms)
         .args(args)

@@ -53,6 +53,19 @@ SubjectID DataManager::FindSender(RCRegion* local) const
     return SubjectID();
 }
 
+bool DataManager::CollectOne(RCRegion* local, SubjectID* subject, RCRegion** source)
+{
+    for (std::list<Record>::iterator it = records_.begin(); it != records_.end(); ++it) {
+        if (it->local != local) continue;
+        *subject = it->subject;
+        *source = it->source;
+        if (it->local != 0) it->local->RemoveReference();
+        records_.erase(it);
+        return true;
+    }
+    return false;
+}
+
 void DataManager::Clear()
 {
     for (std::list<Record>::iterator it = records_.begin(); it != records_.end(); ++it) {

@@ -249,6 +249,21 @@ OStatus OObserver::DeassertReady(const SubjectID& id)
     return oFAIL;
 }
 
+OStatus OObserver::AssertReadyFor(RCRegion* received)
+{
+    SubjectID subject;
+    RCRegion* source = 0;
+    if (!dataManager_->CollectOne(received, &subject, &source)) return oNOT_FOUND;
+    *readyMessage_ = OReadyMessage(objcommCMD_ASSERT_READY, id_);
+    readyMessage_->numOfData = 1;
+    readyMessage_->rcRegion[0] = source;
+    const openr_host_api* api = openr_host();
+    if (api == 0 || api->send(subject.GetOID().GetAddress(), subject.GetSelector(), readyMessage_,
+                              sizeof(OReadyMessage)) != 0)
+        return oFAIL;
+    return oSUCCESS;
+}
+
 OStatus OObserver::AssertReady(const OSubjectInfo& info)
 {
     return AssertReady(info.GetSubjectID());

@@ -28,6 +28,9 @@ public:
        stores up to `max` source pointers; returns how many were stored. */
     int       Collect(const SubjectID& subject, RCRegion** sources, int max);
     SubjectID FindSender(RCRegion* local) const;
+    /* Removes the record of one observer-side region, releases it and returns its
+       subject and source pointer (host extension for system observers). */
+    bool      CollectOne(RCRegion* local, SubjectID* subject, RCRegion** source);
     void      Clear();
 
 private:

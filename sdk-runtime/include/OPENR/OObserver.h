@@ -54,6 +54,12 @@ public:
     const ObserverID& GetID() const;
     const ObserverID& GetObserverID() const;   /* legacy name of GetID() */
 
+    /* Host extension (not in Sony's API), for system observers that finish the data of
+       one notification piece by piece, as the effector and speaker do (robot-api 8.2.3):
+       releases one received region and sends ASSERT-READY returning only that region
+       to its subject. */
+    OStatus AssertReadyFor(RCRegion* received);
+
 private:
     OObserver(const OObserver&);
     OObserver& operator=(const OObserver&);

@@ -1,0 +1,276 @@
+//! The OPENR:: hardware calls of `openr_host.h` (primitives, gains, readings, sync keys,
+//! data vectors) and the two calls system objects use (`vr_attach`, `vr_submit`).
+//! Each returns an OStatus value, as the OPENR:: function that forwards it.
+#![deny(unsafe_op_in_unsafe_fn)]
+
+use std::ffi::{c_char, c_void, CStr};
+
+use crate::robot::status::*;
+use crate::robot::{vectors, Gain, VirtualRobot};
+use crate::runtime::Runtime;
+
+const O_NO_MEMORY: u32 = 5;
+const O_NOT_SUPPORTED: u32 = 3;
+
+fn with_robot<T>(f: impl FnOnce(&mut VirtualRobot) -> T) -> Option<T> {
+    Runtime::get().map(|rt| f(&mut rt.vr.robot()))
+}
+
+pub unsafe extern "C" fn open_primitive(locator: *const c_char, id: *mut u32) -> u32 {
+    if locator.is_null() || id.is_null() {
+        return O_INVALID_ARG;
+    }
+    // SAFETY: NUL-terminated string from the object.
+    let loc = unsafe { CStr::from_ptr(locator) }.to_string_lossy().into_owned();
+    match with_robot(|r| r.open_primitive(&loc)) {
+        Some(Ok(p)) => {
+            // SAFETY: out-param.
+            unsafe { *id = p };
+            O_SUCCESS
+        }
+        Some(Err(st)) => st,
+        None => O_FAIL,
+    }
+}
+
+pub extern "C" fn close_primitive(id: u32) -> u32 {
+    with_robot(|r| r.close_primitive(id)).unwrap_or(O_FAIL)
+}
+
+/// Device requests (robot-api 5): accepted for any open primitive; the virtual devices
+/// have no settings that change what the runtime simulates yet.
+pub unsafe extern "C" fn control_primitive(id: u32, _req: u32, _p: *const c_void, _ps: usize, _r: *mut c_void, _rs: usize) -> u32 {
+    with_robot(|r| if r.model().primitive(id).is_some() { O_SUCCESS } else { O_INVALID_PRIMITIVE_ID }).unwrap_or(O_FAIL)
+}
+
+pub unsafe extern "C" fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
+    let read = |g: *mut u16| -> Option<Gain> {
+        if g.is_null() {
+            return None;
+        }
+        // SAFETY: six words from the object.
+        let w = unsafe { std::slice::from_raw_parts(g, 6) };
+        Some(Gain { p: w[0], i: w[1], d: w[2], p_shift: w[3], i_shift: w[4], d_shift: w[5] })
+    };
+    let write = |g: *mut u16, v: Gain| {
+        if !g.is_null() {
+            // SAFETY: six words from the object.
+            let w = unsafe { std::slice::from_raw_parts_mut(g, 6) };
+            w.copy_from_slice(&[v.p, v.i, v.d, v.p_shift, v.i_shift, v.d_shift]);
+        }
+    };
+    with_robot(|r| match op {
+        0 => r.enable_joint_gain(id),
+        1 => r.disable_joint_gain(id),
+        2 => read(gains).map_or(O_INVALID_ARG, |g| r.set_joint_gain(id, g)),
+        3 => read(gains).map_or(O_INVALID_ARG, |g| r.register_default_joint_gain(id, g)),
+        4 => r.set_default_joint_gain(id),
+        5 => r.get_joint_gain(id).map_or_else(|e| e, |g| {
+            write(gains, g);
+            O_SUCCESS
+        }),
+        6 => r.get_default_joint_gain(id).map_or_else(|e| e, |g| {
+            write(gains, g);
+            O_SUCCESS
+        }),
+        _ => O_INVALID_ARG,
+    })
+    .unwrap_or(O_FAIL)
+}
+
+unsafe fn put16(out: *mut c_void, bytes: [u8; 16]) {
+    // SAFETY: a 16-byte OJointValue/OSensorValue from the object.
+    unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.cast::<u8>(), 16) };
+}
+
+pub unsafe extern "C" fn joint_value(id: u32, out: *mut c_void) -> u32 {
+    if out.is_null() {
+        return O_INVALID_ARG;
+    }
+    match with_robot(|r| r.joint_value(id)) {
+        Some(Ok(v)) => {
+            // SAFETY: see put16.
+            unsafe { put16(out, v.to_bytes()) };
+            O_SUCCESS
+        }
+        Some(Err(st)) => st,
+        None => O_FAIL,
+    }
+}
+
+pub unsafe extern "C" fn sensor_value(id: u32, out: *mut c_void) -> u32 {
+    if out.is_null() {
+        return O_INVALID_ARG;
+    }
+    match with_robot(|r| r.sensor_value(id)) {
+        Some(Ok(v)) => {
+            // SAFETY: see put16.
+            unsafe { put16(out, v.to_bytes()) };
+            O_SUCCESS
+        }
+        Some(Err(st)) => st,
+        None => O_FAIL,
+    }
+}
+
+pub unsafe extern "C" fn sync_key(op: i32, key: u32, k1: *mut u32, k2: *mut u32) -> u32 {
+    let put = |p: *mut u32, v: u32| {
+        if !p.is_null() {
+            // SAFETY: out-param.
+            unsafe { *p = v };
+        }
+    };
+    with_robot(|r| match op {
+        0 => r.new_sync_key().map_or_else(|e| e, |k| {
+            put(k1, k);
+            O_SUCCESS
+        }),
+        1 => r.cancel_sync_key(key),
+        2 => r.divide_sync_key(key).map_or_else(|e| e, |(a, b)| {
+            put(k1, a);
+            put(k2, b);
+            O_SUCCESS
+        }),
+        _ => O_INVALID_ARG,
+    })
+    .unwrap_or(O_FAIL)
+}
+
+/// `OCdtVectorData` as `NewCdtVectorData` leaves it (robot-api 6.7).
+fn cdt_vector_init(buf: &mut [u8]) {
+    let put = |buf: &mut [u8], off: usize, v: u32| buf[off..off + 4].copy_from_slice(&v.to_le_bytes());
+    put(buf, 16, 1028);
+    put(buf, 20, 192);
+    put(buf, 24, 144);
+    put(buf, 28, 8);
+    put(buf, 32, 0);
+    put(buf, 36, 0xFFFF_FFFF);
+    for i in 0..8 {
+        let info = 192 + 144 * i;
+        put(buf, info, 21);
+        put(buf, info + 4, 0xFFFF_FFFF);
+        put(buf, info + 8, 0);
+        for e in 0..32 {
+            put(buf, info + 12 + 4 * e, 0x8080_8080);
+        }
+    }
+}
+
+pub unsafe extern "C" fn new_vector(kind: i32, n: usize, data_size: usize, mem_id: *mut u32, base: *mut *mut c_void) -> u32 {
+    let Some(rt) = Runtime::get() else { return O_FAIL };
+    if mem_id.is_null() || base.is_null() || n == 0 || n > 4096 || data_size > 1 << 24 {
+        return O_INVALID_ARG;
+    }
+    let design = rt.design.to_string_lossy().into_owned();
+    let image = rt.vr.robot().image_layout();
+    let size = match kind {
+        0 => vectors::command_vector_size(n),
+        1 => vectors::sound_vector_size(n, data_size),
+        2 => 192 + 144 * 8,
+        3 => vectors::sensor_vector_size(n),
+        4 => image.size(),
+        _ => return O_INVALID_ARG,
+    };
+    let total = vectors::region_size(size);
+    let Some((id, p)) = rt.shm.alloc(total) else { return O_NO_MEMORY };
+    // SAFETY: a fresh zeroed region of `total` bytes.
+    let buf = unsafe { std::slice::from_raw_parts_mut(p, total) };
+    let init = match kind {
+        0 => vectors::command_vector_init(buf, n).is_ok(),
+        1 => vectors::sound_vector_init(buf, n, data_size, &design).is_ok(),
+        2 => {
+            cdt_vector_init(buf);
+            true
+        }
+        3 => vectors::sensor_vector_init(buf, n).is_ok(),
+        _ => image.write_header(buf, u32::MAX, u32::MAX).is_ok(),
+    };
+    if !init || vectors::set_region_fields(buf, id, 0, total as u32).is_err() {
+        rt.shm.unref(id);
+        return O_FAIL;
+    }
+    rt.vectors.lock().unwrap_or_else(|p| p.into_inner()).push(id);
+    // SAFETY: out-params.
+    unsafe {
+        *mem_id = id;
+        *base = p.cast();
+    }
+    O_SUCCESS
+}
+
+pub extern "C" fn delete_vector(mem_id: u32) -> u32 {
+    let Some(rt) = Runtime::get() else { return O_FAIL };
+    let mut v = rt.vectors.lock().unwrap_or_else(|p| p.into_inner());
+    match v.iter().position(|i| *i == mem_id) {
+        Some(pos) => {
+            v.swap_remove(pos);
+            rt.shm.unref(mem_id);
+            O_SUCCESS
+        }
+        None => O_INVALID_ARG,
+    }
+}
+
+/// Colour detection tables: accepted and validated; the camera that would use them
+/// is not rendered yet.
+pub extern "C" fn set_cdt(mem_id: u32) -> u32 {
+    let Some(rt) = Runtime::get() else { return O_FAIL };
+    match rt.shm.base(mem_id) {
+        Some((p, n)) if n >= 192 => {
+            // SAFETY: a live region of n bytes.
+            let b = unsafe { std::slice::from_raw_parts(p, n) };
+            if u32::from_le_bytes([b[16], b[17], b[18], b[19]]) == 1028 {
+                O_SUCCESS
+            } else {
+                4098 // oINVALID_DATA_TYPE
+            }
+        }
+        _ => O_INVALID_ARG,
+    }
+}
+
+pub unsafe extern "C" fn volume_switch(set: i32, value: *mut u8) -> u32 {
+    let Some(rt) = Runtime::get() else { return O_FAIL };
+    if value.is_null() {
+        return O_INVALID_ARG;
+    }
+    if set != 0 {
+        // SAFETY: in-param.
+        let v = unsafe { *value };
+        if v > 3 {
+            return O_INVALID_ARG;
+        }
+        crate::boot::update_power(rt, |s| s.volume = v.into());
+    } else {
+        // SAFETY: out-param.
+        unsafe { *value = rt.power.state().volume as u8 };
+    }
+    O_SUCCESS
+}
+
+pub extern "C" fn vr_attach(service: i32, selector: u32) -> u32 {
+    let (Some(rt), Some(me)) = (Runtime::get(), crate::object::current()) else { return O_FAIL };
+    if rt.vr.attach(service as usize, me.oid, selector) {
+        O_SUCCESS
+    } else {
+        O_INVALID_ARG
+    }
+}
+
+pub unsafe extern "C" fn vr_submit(service: i32, oid: *mut c_void, selector: u32, base: *mut c_void, size: usize, token: *mut u64) -> u32 {
+    let Some(rt) = Runtime::get() else { return O_FAIL };
+    if service as usize != crate::vr::SERVICE_EFFECTOR || base.is_null() || token.is_null() {
+        return O_NOT_SUPPORTED;
+    }
+    match rt.vr.submit((oid as usize, selector), base as usize, size) {
+        Ok(t) => {
+            // SAFETY: out-param.
+            unsafe { *token = t };
+            O_SUCCESS
+        }
+        Err(e) => {
+            rt.diag.warn(&format!("effector: malformed command vector refused: {e}"));
+            O_INVALID_ARG
+        }
+    }
+}

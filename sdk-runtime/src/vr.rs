@@ -1,0 +1,171 @@
+//! The virtual robot in the running system: [`robot::VirtualRobot`] behind the OPENR::
+//! hardware calls, a frame thread that advances it every 8 ms, and the traffic with the
+//! system objects (`OVirtualRobotComm`, built from `cxx/system/`), which speak the
+//! subject/observer protocol with user objects.
+//!
+//! Effector: the system object hands each received command vector to [`VrService::submit`]
+//! and keeps the region; when the robot reports the vector done, an `OPENR_VR_DONE` event
+//! tells the object to release that region and ASSERT-READY its subject. Sensor: every
+//! 4th frame the robot's sensor vector is copied into a fresh shared region and sent to
+//! the object as an `OPENR_VR_DATA` event, which publishes it to the observers.
+use std::collections::HashMap;
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+use crate::robot::{self, vectors, VirtualRobot};
+use crate::runtime::Runtime;
+
+pub const SERVICE_EFFECTOR: usize = 0;
+pub const SERVICE_SENSOR: usize = 1;
+pub const SERVICE_IMAGE: usize = 2;
+pub const SERVICE_SPEAKER: usize = 3;
+pub const SERVICE_MIC: usize = 4;
+const EVENT_DONE: u32 = 1;
+const EVENT_DATA: u32 = 2;
+
+/// `struct openr_vr_event` (openr_host.h).
+#[repr(C)]
+struct VrEvent {
+    kind: u32,
+    service: u32,
+    token: u64,
+    mem_id: u32,
+    size: u32,
+}
+
+impl VrEvent {
+    fn bytes(&self) -> Vec<u8> {
+        // SAFETY: a repr(C) struct of plain integers.
+        unsafe { std::slice::from_raw_parts((self as *const VrEvent).cast::<u8>(), std::mem::size_of::<VrEvent>()) }.to_vec()
+    }
+}
+
+#[derive(Default)]
+struct Wiring {
+    /// Per service: the system object (oid, event selector) that provides it.
+    providers: [Option<(usize, u32)>; 5],
+    /// Subject (oid, selector) → the robot's connection id.
+    connections: HashMap<(usize, u32), u32>,
+    /// Playing vectors: token → (base address, size) of the region the object keeps.
+    playing: HashMap<u64, (usize, usize)>,
+}
+
+pub struct VrService {
+    pub robot: Mutex<VirtualRobot>,
+    wiring: Mutex<Wiring>,
+    trace: Option<Mutex<BufWriter<File>>>,
+}
+
+impl VrService {
+    pub fn new(mut robot: VirtualRobot, trace: Option<File>) -> VrService {
+        robot.set_trace(trace.is_some());
+        VrService { robot: Mutex::new(robot), wiring: Mutex::new(Wiring::default()), trace: trace.map(|f| Mutex::new(BufWriter::new(f))) }
+    }
+
+    pub fn robot(&self) -> std::sync::MutexGuard<'_, VirtualRobot> {
+        self.robot.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    fn wiring(&self) -> std::sync::MutexGuard<'_, Wiring> {
+        self.wiring.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    pub fn attach(&self, service: usize, oid: usize, selector: u32) -> bool {
+        match self.wiring().providers.get_mut(service) {
+            Some(slot) => {
+                *slot = Some((oid, selector));
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// A command vector received by the effector from subject (oid, selector).
+    pub fn submit(&self, subject: (usize, u32), base: usize, size: usize) -> Result<u64, robot::VectorError> {
+        let conn = {
+            let mut w = self.wiring();
+            let next = w.connections.len() as u32 + 1;
+            *w.connections.entry(subject).or_insert(next)
+        };
+        // SAFETY: the system object keeps the region alive until we report it done.
+        let bytes = unsafe { std::slice::from_raw_parts(base as *const u8, size) };
+        let token = self.robot().submit_command(conn, bytes)?;
+        self.wiring().playing.insert(token, (base, size));
+        Ok(token)
+    }
+
+    /// Runs one frame and delivers what it produced.
+    pub fn step(&self, rt: &Runtime) {
+        let out = self.robot().step_frame();
+        for s in &out.started {
+            if let Some(&(base, size)) = self.wiring().playing.get(&s.token) {
+                // SAFETY: still held by the system object (not reported done yet).
+                let bytes = unsafe { std::slice::from_raw_parts_mut(base as *mut u8, size) };
+                let _ = robot::write_frame_numbers(bytes, s);
+            }
+        }
+        let effector = self.wiring().providers[SERVICE_EFFECTOR];
+        for c in &out.completed {
+            self.wiring().playing.remove(&c.token);
+            if let Some((oid, sel)) = effector {
+                let ev = VrEvent { kind: EVENT_DONE, service: SERVICE_EFFECTOR as u32, token: c.token, mem_id: 0, size: 0 };
+                let _ = rt.send(oid, sel, ev.bytes());
+            }
+        }
+        if let Some(vector) = out.sensor_vector {
+            self.publish(rt, SERVICE_SENSOR, vector);
+        }
+        if let Some(t) = &self.trace {
+            let mut w = t.lock().unwrap_or_else(|p| p.into_inner());
+            for r in &out.trace {
+                let _ = writeln!(w, "{}", r.to_json());
+            }
+        }
+    }
+
+    /// Copies a finished vector into a new shared region and hands it (with the
+    /// region's one reference) to the system object that provides `service`.
+    fn publish(&self, rt: &Runtime, service: usize, mut vector: Vec<u8>) {
+        let Some((oid, sel)) = self.wiring().providers[service] else { return };
+        let Some((mem_id, base)) = rt.shm.alloc(vector.len()) else { return };
+        let len = vector.len() as u32;
+        let _ = vectors::set_region_fields(&mut vector, mem_id, 0, len);
+        // SAFETY: a fresh region of vector.len() bytes.
+        unsafe { std::ptr::copy_nonoverlapping(vector.as_ptr(), base, vector.len()) };
+        let ev = VrEvent { kind: EVENT_DATA, service: service as u32, token: 0, mem_id, size: vector.len() as u32 };
+        if rt.send(oid, sel, ev.bytes()).is_err() {
+            rt.shm.unref(mem_id);
+        }
+    }
+
+    pub fn flush_trace(&self) {
+        if let Some(t) = &self.trace {
+            let _ = t.lock().unwrap_or_else(|p| p.into_inner()).flush();
+        }
+    }
+}
+
+/// The frame thread: one robot frame every 8 ms of real time, reporting frames that
+/// could not be run on time instead of silently catching up.
+pub fn run_frames(rt: &'static Runtime) -> ! {
+    const FRAME: Duration = Duration::from_millis(8);
+    let mut next = Instant::now() + FRAME;
+    let mut late_reported = 0u64;
+    let mut late = 0u64;
+    loop {
+        let now = Instant::now();
+        if next > now {
+            std::thread::sleep(next - now);
+        } else if now - next > FRAME {
+            late += 1;
+            if late >= late_reported * 2 + 1 {
+                rt.diag.warn(&format!("virtual robot: {late} frame(s) started more than 8 ms late"));
+                late_reported = late;
+            }
+        }
+        rt.vr.step(rt);
+        next += FRAME;
+    }
+}
