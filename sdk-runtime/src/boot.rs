@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
 use std::sync::mpsc;
 use std::sync::{Arc, Mutex, OnceLock, RwLock};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use crate::cfg;
 use crate::clock::Clock;
@@ -35,6 +35,10 @@ pub struct RunOptions {
     pub system_objects: Vec<PathBuf>,
     /// Write the virtual robot's JSON-lines trace here.
     pub trace: Option<PathBuf>,
+    /// How fast virtual time runs.
+    pub speed: crate::clock::Speed,
+    /// Unix socket for pause / step / resume / speed commands.
+    pub control: Option<PathBuf>,
 }
 
 /// How a run ended.
@@ -84,7 +88,7 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
     std::hint::black_box(crate::host_api::api_table());
     std::hint::black_box(crate::interpose::keep());
 
-    let clock = Clock::new();
+    let clock = Clock::new(opts.speed);
     let rt = Runtime::install(Runtime {
         ms,
         design: CString::new(opts.design.clone()).map_err(|_| ErrorKind::Runtime("bad design name".into()))?,
@@ -101,12 +105,6 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
         vr: crate::vr::VrService::new(robot, trace),
         vectors: Mutex::new(Vec::new()),
     });
-    std::thread::Builder::new()
-        .name("openr-timers".into())
-        .spawn(move || rt.timers.run(|dest, sel, msg| {
-            let _ = rt.send(dest, sel, msg);
-        }))
-        .map_err(|e| ErrorKind::Runtime(format!("cannot start the timer thread: {e}")))?;
 
     let scratch = tempdir()?;
     for (i, (path, image)) in opts.system_objects.iter().zip(system_images).enumerate() {
@@ -120,14 +118,19 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
     let all = rt.all_objects();
     rt.diag.info(&format!("loaded {} object(s) from {}", all.len(), object_cfg_path.display()));
 
-    for slot in &all {
-        hook(rt, slot, SEL_INIT, OREASON_BOOT, None)?;
+    // Virtual time runs from here on: an object may sleep in its DoInit.
+    if let Some(path) = &opts.control {
+        crate::control::serve(rt, path)?;
     }
-    connect_all(rt, &connect_path, &connections, opts.lenient_connect)?;
     std::thread::Builder::new()
         .name("openr-robot".into())
         .spawn(move || crate::vr::run_frames(rt))
         .map_err(|e| ErrorKind::Runtime(format!("cannot start the robot thread: {e}")))?;
+    for slot in &all {
+        hook(rt, slot, SEL_INIT, OREASON_BOOT, None)?;
+    }
+    connect_all(rt, &connect_path, &connections, opts.lenient_connect)?;
+
     for slot in &all {
         // Start is not awaited: a DoStart may block (on console input, say).
         let module = slot.module.get().expect("loaded");
@@ -191,6 +194,8 @@ fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path
         module: OnceLock::new(),
         tx,
         stopped: AtomicBool::new(false),
+        pending: std::sync::atomic::AtomicUsize::new(0),
+        sleeping: AtomicBool::new(false),
     });
     rt.objects.write().unwrap_or_else(|p| p.into_inner()).push(slot.clone());
     let (done_tx, done_rx) = mpsc::sync_channel::<Result<()>>(1);
@@ -286,20 +291,16 @@ fn connect_all(rt: &Runtime, path: &std::path::Path, conns: &[cfg::Connection], 
     Ok(())
 }
 
+/// Waits until `run_for` of virtual time has passed, a signal, or OPENR::Shutdown.
 fn wait_for_end(rt: &Runtime, signals: &crate::signals::Termination, run_for: Option<Duration>) -> Ended {
-    let start = Instant::now();
     loop {
         if rt.shutdown_requested.load(std::sync::atomic::Ordering::Acquire) {
             return Ended::Shutdown;
         }
-        let mut slice = Duration::from_millis(20);
-        if let Some(total) = run_for {
-            let elapsed = start.elapsed();
-            if elapsed >= total {
-                return Ended::TimeUp;
-            }
-            slice = slice.min(total - elapsed);
+        if run_for.is_some_and(|total| rt.clock.since_boot() >= total) {
+            return Ended::TimeUp;
         }
+        let slice = Duration::from_millis(5);
         match signals.wait(slice) {
             Some(libc::SIGUSR1) => press_pause_button(rt),
             Some(sig) => return Ended::Signal(sig),

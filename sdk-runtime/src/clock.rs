@@ -1,41 +1,183 @@
-//! Time as objects see it: time since boot (`GetSystemTime`) and the robot's calendar
-//! clock (`OPENR::GetTime`, seconds since 2000-01-01 UTC, robot-api 9.6).
-use std::sync::Mutex;
-use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
+//! Time as objects see it. Virtual time advances only in 8 ms robot frames, driven by the
+//! frame thread (`vr::run_frames`) at the chosen speed: 1 = real time, 4 = four times
+//! faster, `max` = as fast as the objects keep up. `GetSystemTime`, `SetTimeEvent`
+//! timers, `Wait` and the sleeps of objects all follow it, so a run at `--speed max` does
+//! the same thing as one in real time, only sooner. The robot's calendar clock
+//! (`OPENR::GetTime`, seconds since 2000-01-01 UTC, robot-api 9.6) is the host's wall
+//! clock at boot plus virtual time.
+use std::sync::{Condvar, Mutex};
+use std::time::{Duration, SystemTime, UNIX_EPOCH};
 
 /// Seconds from the Unix epoch to 2000-01-01 00:00:00 UTC.
 pub const EPOCH_2000: i64 = 946_684_800;
+/// One robot frame.
+pub const FRAME: Duration = Duration::from_millis(8);
+
+/// How fast virtual time runs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Speed {
+    /// Virtual seconds per real second.
+    Factor(f64),
+    /// No waiting between frames beyond what the objects need.
+    Max,
+}
+
+impl std::str::FromStr for Speed {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Speed, String> {
+        if s.eq_ignore_ascii_case("max") {
+            return Ok(Speed::Max);
+        }
+        match s.parse::<f64>() {
+            Ok(f) if f.is_finite() && f > 0.0 && f <= 1000.0 => Ok(Speed::Factor(f)),
+            _ => Err(format!("`{s}` is not a speed: give a factor in (0, 1000] (1 = real time) or `max`")),
+        }
+    }
+}
+
+struct State {
+    now: Duration,
+    speed: Speed,
+    paused: bool,
+    /// Frames still to run while paused (`step`).
+    steps: u64,
+}
 
 pub struct Clock {
-    boot: Instant,
-    /// Offset added to the host clock by `OPENR::SetTime`, and the time difference.
+    state: Mutex<State>,
+    tick: Condvar,
+    boot_wall: i64,
+    /// Offset added by `OPENR::SetTime`, and the time difference.
     calendar: Mutex<(i64, i32)>,
 }
 
 impl Clock {
-    pub fn new() -> Clock {
-        Clock { boot: Instant::now(), calendar: Mutex::new((0, 0)) }
+    pub fn new(speed: Speed) -> Clock {
+        let wall = SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs() as i64);
+        Clock {
+            state: Mutex::new(State { now: Duration::ZERO, speed, paused: false, steps: 0 }),
+            tick: Condvar::new(),
+            boot_wall: wall,
+            calendar: Mutex::new((0, 0)),
+        }
     }
 
+    fn lock(&self) -> std::sync::MutexGuard<'_, State> {
+        self.state.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// Virtual time since boot.
     pub fn since_boot(&self) -> Duration {
-        self.boot.elapsed()
+        self.lock().now
+    }
+
+    pub fn speed(&self) -> Speed {
+        self.lock().speed
+    }
+
+    pub fn set_speed(&self, speed: Speed) {
+        self.lock().speed = speed;
+        self.tick.notify_all();
+    }
+
+    pub fn paused(&self) -> bool {
+        self.lock().paused
+    }
+
+    pub fn set_paused(&self, paused: bool) {
+        let mut s = self.lock();
+        s.paused = paused;
+        s.steps = 0;
+        self.tick.notify_all();
+    }
+
+    /// While paused, lets `frames` more frames run.
+    pub fn step(&self, frames: u64) {
+        let mut s = self.lock();
+        s.steps += frames;
+        self.tick.notify_all();
+    }
+
+    /// Frame thread: blocks while paused with no steps left; consumes one step.
+    pub fn wait_runnable(&self) {
+        let mut s = self.lock();
+        while s.paused && s.steps == 0 {
+            s = self.tick.wait(s).unwrap_or_else(|p| p.into_inner());
+        }
+        if s.paused {
+            s.steps -= 1;
+        }
+    }
+
+    /// Frame thread: one frame has run.
+    pub fn advance(&self) -> Duration {
+        let mut s = self.lock();
+        s.now += FRAME;
+        let now = s.now;
+        drop(s);
+        self.tick.notify_all();
+        now
+    }
+
+    /// Blocks the calling thread until virtual time has advanced by `d`.
+    pub fn sleep(&self, d: Duration) {
+        let mut s = self.lock();
+        let until = s.now + d;
+        while s.now < until {
+            s = self.tick.wait(s).unwrap_or_else(|p| p.into_inner());
+        }
     }
 
     /// Seconds since 2000-01-01 UTC and the time difference in hours.
     pub fn calendar(&self) -> (i64, i32) {
-        let host = SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs() as i64);
         let (offset, dif) = *self.calendar.lock().unwrap_or_else(|p| p.into_inner());
-        (host - EPOCH_2000 + offset, dif)
+        (self.boot_wall + self.since_boot().as_secs() as i64 - EPOCH_2000 + offset, dif)
     }
 
     pub fn set_calendar(&self, sec_since_2000: i64, time_dif: i32) {
-        let host = SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs() as i64);
-        *self.calendar.lock().unwrap_or_else(|p| p.into_inner()) = (sec_since_2000 - (host - EPOCH_2000), time_dif);
+        let current = self.calendar().0 - self.calendar.lock().unwrap_or_else(|p| p.into_inner()).0;
+        *self.calendar.lock().unwrap_or_else(|p| p.into_inner()) = (sec_since_2000 - current, time_dif);
     }
 }
 
-impl Default for Clock {
-    fn default() -> Clock {
-        Clock::new()
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn speeds_parse_and_time_advances_by_frames() {
+        assert_eq!("max".parse::<Speed>(), Ok(Speed::Max));
+        assert_eq!("2.5".parse::<Speed>(), Ok(Speed::Factor(2.5)));
+        assert!("0".parse::<Speed>().is_err() && "fast".parse::<Speed>().is_err());
+        let c = Clock::new(Speed::Max);
+        assert_eq!(c.since_boot(), Duration::ZERO);
+        c.advance();
+        c.advance();
+        assert_eq!(c.since_boot(), Duration::from_millis(16));
+    }
+
+    #[test]
+    fn sleepers_wake_when_virtual_time_passes() {
+        let c = std::sync::Arc::new(Clock::new(Speed::Max));
+        let c2 = c.clone();
+        let t = std::thread::spawn(move || c2.sleep(Duration::from_millis(20)));
+        for _ in 0..3 {
+            std::thread::sleep(Duration::from_millis(5));
+            c.advance();
+        }
+        t.join().unwrap();
+        assert_eq!(c.since_boot(), Duration::from_millis(24));
+    }
+
+    #[test]
+    fn paused_clock_runs_only_the_steps_asked_for() {
+        let c = Clock::new(Speed::Max);
+        c.set_paused(true);
+        c.step(2);
+        c.wait_runnable();
+        c.wait_runnable();
+        assert!(c.paused());
+        c.set_calendar(100, 9);
+        assert_eq!(c.calendar(), (100, 9));
     }
 }

@@ -314,8 +314,21 @@ extern "C" fn set_clock(sec: i64, dif: i32) {
     }
 }
 
+/// Sleeps on virtual time; the object counts as idle meanwhile (so `--speed max`
+/// advances the clock it waits for).
 extern "C" fn sleep_ns(ns: u64) {
-    std::thread::sleep(Duration::from_nanos(ns));
+    let Some(rt) = rt() else {
+        std::thread::sleep(Duration::from_nanos(ns));
+        return;
+    };
+    let me = object::current();
+    if let Some(s) = &me {
+        s.sleeping.store(true, Ordering::Release);
+    }
+    rt.clock.sleep(Duration::from_nanos(ns));
+    if let Some(s) = &me {
+        s.sleeping.store(false, Ordering::Release);
+    }
 }
 
 extern "C" fn robot_design() -> *const c_char {
@@ -352,7 +365,7 @@ unsafe extern "C" fn set_timer(dest: *mut c_void, selector: u32, msg: *const c_v
     let Some(rt) = rt() else { return 0 };
     let data = unsafe { bytes(msg, size) }.to_vec();
     let period = (period_ms > 0).then(|| Duration::from_millis(period_ms.into()));
-    rt.timers.add(dest as usize, selector, data, Duration::from_millis(after_ms.into()), period)
+    rt.timers.add(rt.clock.since_boot(), dest as usize, selector, data, Duration::from_millis(after_ms.into()), period)
 }
 
 extern "C" fn cancel_timer(id: u32) -> i32 {

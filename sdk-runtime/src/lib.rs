@@ -16,6 +16,7 @@ pub mod boot;
 pub mod cfg;
 pub mod clock;
 pub mod console;
+pub mod control;
 mod crash;
 pub mod design;
 pub mod error;

@@ -27,6 +27,11 @@ pub struct ObjectSlot {
     pub tx: Sender<Envelope>,
     /// Set when the object called `exit()`: it no longer runs (object-model 1.5).
     pub stopped: AtomicBool,
+    /// Messages queued or being handled: zero everywhere means the system is idle, which
+    /// is when `--speed max` runs the next frame.
+    pub pending: std::sync::atomic::AtomicUsize,
+    /// Inside a sleep on virtual time: idle for the frame thread's purposes.
+    pub sleeping: AtomicBool,
 }
 
 impl ObjectSlot {
@@ -40,6 +45,11 @@ impl ObjectSlot {
 
     pub fn is_stopped(&self) -> bool {
         self.stopped.load(Ordering::Acquire)
+    }
+
+    /// No message waiting or running (or only a virtual-time sleep, or stopped).
+    pub fn is_idle(&self) -> bool {
+        self.is_stopped() || self.sleeping.load(Ordering::Acquire) || self.pending.load(Ordering::Acquire) == 0
     }
 }
 
@@ -93,5 +103,6 @@ pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(
         // A call whose entry returned without Reply/Return gets an empty answer, so the
         // caller is never left waiting forever.
         reply_current(&[]);
+        slot.pending.fetch_sub(1, Ordering::AcqRel);
     }
 }

@@ -74,6 +74,14 @@ pub enum CallError {
     Timeout,
 }
 
+fn enqueue(slot: &ObjectSlot, env: Envelope) -> Result<(), CallError> {
+    slot.pending.fetch_add(1, Ordering::AcqRel);
+    slot.tx.send(env).map_err(|_| {
+        slot.pending.fetch_sub(1, Ordering::AcqRel);
+        CallError::UnknownDestination
+    })
+}
+
 impl Runtime {
     /// Installs the process's runtime; there is one per process (the host API is global).
     pub fn install(rt: Runtime) -> &'static Runtime {
@@ -99,7 +107,12 @@ impl Runtime {
     /// Queues a message (asynchronous `Send`).
     pub fn send(&self, dest: usize, selector: u32, data: Vec<u8>) -> Result<(), CallError> {
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
-        slot.tx.send(Envelope { selector, data, reply: None }).map_err(|_| CallError::UnknownDestination)
+        enqueue(&slot, Envelope { selector, data, reply: None })
+    }
+
+    /// Whether every object is idle (nothing queued or running).
+    pub fn quiescent(&self) -> bool {
+        self.objects.read().unwrap_or_else(|p| p.into_inner()).iter().all(|s| s.is_idle())
     }
 
     /// Sends and waits for the answer (`Call`), at most `timeout` if given.
@@ -109,7 +122,7 @@ impl Runtime {
         }
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
         let (tx, rx) = mpsc::sync_channel(1);
-        slot.tx.send(Envelope { selector, data, reply: Some(tx) }).map_err(|_| CallError::UnknownDestination)?;
+        enqueue(&slot, Envelope { selector, data, reply: Some(tx) })?;
         match timeout {
             Some(t) => rx.recv_timeout(t).map_err(|e| match e {
                 RecvTimeoutError::Timeout => CallError::Timeout,

@@ -1,8 +1,9 @@
-//! `SetTimeEvent`: messages delivered to an object after a delay, optionally periodic.
+//! `SetTimeEvent`: messages delivered to an object after a delay of virtual time,
+//! optionally periodic. The frame thread fires what is due after each frame.
 use std::collections::{BinaryHeap, HashMap};
 use std::cmp::Reverse;
-use std::sync::{Condvar, Mutex};
-use std::time::{Duration, Instant};
+use std::sync::Mutex;
+use std::time::Duration;
 
 struct Timer {
     dest: usize,
@@ -15,26 +16,26 @@ struct Timer {
 struct State {
     next_id: u32,
     timers: HashMap<u32, Timer>,
-    due: BinaryHeap<Reverse<(Instant, u32)>>,
+    due: BinaryHeap<Reverse<(Duration, u32)>>,
 }
 
+#[derive(Default)]
 pub struct Timers {
     state: Mutex<State>,
-    wake: Condvar,
 }
 
 impl Timers {
     pub fn new() -> Timers {
-        Timers { state: Mutex::new(State::default()), wake: Condvar::new() }
+        Timers::default()
     }
 
-    pub fn add(&self, dest: usize, selector: u32, msg: Vec<u8>, after: Duration, period: Option<Duration>) -> u32 {
+    /// Adds a timer due `after` the virtual time `now`.
+    pub fn add(&self, now: Duration, dest: usize, selector: u32, msg: Vec<u8>, after: Duration, period: Option<Duration>) -> u32 {
         let mut s = self.state.lock().unwrap_or_else(|p| p.into_inner());
         s.next_id = s.next_id.wrapping_add(1).max(1);
         let id = s.next_id;
-        s.timers.insert(id, Timer { dest, selector, msg, period });
-        s.due.push(Reverse((Instant::now() + after, id)));
-        self.wake.notify_one();
+        s.timers.insert(id, Timer { dest, selector, msg, period: period.filter(|p| !p.is_zero()) });
+        s.due.push(Reverse((now + after, id)));
         id
     }
 
@@ -42,35 +43,50 @@ impl Timers {
         self.state.lock().unwrap_or_else(|p| p.into_inner()).timers.remove(&id).is_some()
     }
 
-    /// Runs forever on its own thread, handing due messages to `deliver`.
-    pub fn run(&self, deliver: impl Fn(usize, u32, Vec<u8>)) -> ! {
-        let mut s = self.state.lock().unwrap_or_else(|p| p.into_inner());
-        loop {
-            let now = Instant::now();
-            match s.due.peek().copied() {
-                Some(Reverse((at, id))) if at <= now => {
-                    s.due.pop();
-                    let Some(t) = s.timers.get(&id) else { continue };
-                    let (dest, sel, msg) = (t.dest, t.selector, t.msg.clone());
-                    match t.period {
-                        Some(p) => s.due.push(Reverse((at + p, id))),
-                        None => {
-                            s.timers.remove(&id);
-                        }
-                    }
-                    drop(s);
-                    deliver(dest, sel, msg);
-                    s = self.state.lock().unwrap_or_else(|p| p.into_inner());
+    /// Hands every message due at virtual time `now` to `deliver`.
+    pub fn fire_due(&self, now: Duration, deliver: impl Fn(usize, u32, Vec<u8>)) {
+        let mut due = Vec::new();
+        {
+            let mut s = self.state.lock().unwrap_or_else(|p| p.into_inner());
+            while let Some(&Reverse((at, id))) = s.due.peek() {
+                if at > now {
+                    break;
                 }
-                Some(Reverse((at, _))) => s = self.wake.wait_timeout(s, at - now).unwrap_or_else(|p| p.into_inner()).0,
-                None => s = self.wake.wait(s).unwrap_or_else(|p| p.into_inner()),
+                s.due.pop();
+                let Some(t) = s.timers.get(&id) else { continue };
+                due.push((t.dest, t.selector, t.msg.clone()));
+                match t.period {
+                    Some(p) => s.due.push(Reverse((at + p, id))),
+                    None => {
+                        s.timers.remove(&id);
+                    }
+                }
             }
+        }
+        for (dest, sel, msg) in due {
+            deliver(dest, sel, msg);
         }
     }
 }
 
-impl Default for Timers {
-    fn default() -> Timers {
-        Timers::new()
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::Mutex as M;
+
+    #[test]
+    fn one_shot_periodic_and_cancelled() {
+        let t = Timers::new();
+        let ms = Duration::from_millis;
+        let a = t.add(ms(0), 1, 10, vec![1], ms(16), None);
+        let _b = t.add(ms(0), 1, 11, vec![2], ms(8), Some(ms(8)));
+        let c = t.add(ms(0), 1, 12, vec![3], ms(8), None);
+        assert!(t.cancel(c));
+        let got = M::new(Vec::new());
+        for f in 1..=3 {
+            t.fire_due(ms(8 * f), |_, sel, _| got.lock().unwrap().push((f, sel)));
+        }
+        assert_eq!(*got.lock().unwrap(), [(1, 11), (2, 10), (2, 11), (3, 11)]);
+        assert!(!t.cancel(a), "a one-shot timer is gone once fired");
     }
 }

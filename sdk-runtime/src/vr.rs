@@ -14,6 +14,7 @@ use std::io::{BufWriter, Write};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
+use crate::clock::{Speed, FRAME};
 use crate::robot::{self, vectors, VirtualRobot};
 use crate::runtime::Runtime;
 
@@ -147,25 +148,54 @@ impl VrService {
     }
 }
 
-/// The frame thread: one robot frame every 8 ms of real time, reporting frames that
-/// could not be run on time instead of silently catching up.
+/// The frame thread: runs robot frames at the clock's speed. In real time (or a factor
+/// of it) a frame that cannot start on time is counted and reported, never replayed; at
+/// `max` each frame starts as soon as every object has handled everything sent to it,
+/// so no sensor frame is ever dropped. Due timers fire after each frame.
 pub fn run_frames(rt: &'static Runtime) -> ! {
-    const FRAME: Duration = Duration::from_millis(8);
-    let mut next = Instant::now() + FRAME;
-    let mut late_reported = 0u64;
+    let mut next = Instant::now();
     let mut late = 0u64;
+    let mut late_reported = 0u64;
     loop {
-        let now = Instant::now();
-        if next > now {
-            std::thread::sleep(next - now);
-        } else if now - next > FRAME {
-            late += 1;
-            if late >= late_reported * 2 + 1 {
-                rt.diag.warn(&format!("virtual robot: {late} frame(s) started more than 8 ms late"));
-                late_reported = late;
+        rt.clock.wait_runnable();
+        match rt.clock.speed() {
+            Speed::Max => {
+                wait_until_idle(rt);
+                next = Instant::now();
+            }
+            Speed::Factor(f) => {
+                let period = FRAME.div_f64(f);
+                next += period;
+                let now = Instant::now();
+                if next > now {
+                    std::thread::sleep(next - now);
+                } else if now - next > period {
+                    late += 1;
+                    if late >= late_reported * 2 + 1 {
+                        rt.diag.warn(&format!("virtual robot: {late} frame(s) started late (the host could not keep up)"));
+                        late_reported = late;
+                    }
+                    next = now;
+                }
             }
         }
         rt.vr.step(rt);
-        next += FRAME;
+        let now = rt.clock.advance();
+        rt.timers.fire_due(now, |dest, sel, msg| {
+            let _ = rt.send(dest, sel, msg);
+        });
+    }
+}
+
+/// Waits (briefly polling) until no object has anything queued or running.
+fn wait_until_idle(rt: &Runtime) {
+    let mut spins = 0u32;
+    while !rt.quiescent() {
+        spins += 1;
+        if spins < 64 {
+            std::thread::yield_now();
+        } else {
+            std::thread::sleep(Duration::from_micros(20));
+        }
     }
 }

@@ -5,6 +5,7 @@ use std::time::Duration;
 use anyhow::Context;
 use openr_wrappers::install;
 use sdk_runtime::boot::{self, Ended, RunOptions};
+use sdk_runtime::clock::Speed;
 use sdk_runtime::runtime::Diag;
 
 use crate::shell::Shell;
@@ -14,7 +15,7 @@ pub struct Args {
     /// The Memory Stick directory (the one containing OPEN-R/)
     #[arg(value_name = "MS_DIR")]
     ms_dir: PathBuf,
-    /// Stop cleanly after this much time (e.g. 5s, 250ms, 2m)
+    /// Stop cleanly after this much virtual time (e.g. 5s, 250ms, 2m)
     #[arg(long = "for", value_name = "DURATION", value_parser = parse_duration)]
     run_for: Option<Duration>,
     /// Robot design: selects [ERS-…] sections of the CFG files and GetRobotDesign()
@@ -23,6 +24,12 @@ pub struct Args {
     /// Skip CONNECT.CFG lines that name unknown services (the robot's behaviour) instead of failing
     #[arg(long)]
     lenient_connect: bool,
+    /// Virtual-time speed: a factor of real time (1 = real time, 4, 0.5) or `max` (as fast as the objects keep up)
+    #[arg(long, default_value = "1", value_parser = parse_speed)]
+    speed: Speed,
+    /// Serve pause / resume / step / speed / status commands on this Unix socket
+    #[arg(long, value_name = "PATH")]
+    control: Option<PathBuf>,
     /// Write the virtual robot's trace (JSON lines: commands, sensor frames, LEDs) to FILE
     #[arg(long, value_name = "FILE")]
     trace: Option<PathBuf>,
@@ -35,6 +42,10 @@ pub struct Args {
     /// More runtime diagnostics on stderr
     #[arg(short, long)]
     verbose: bool,
+}
+
+fn parse_speed(s: &str) -> Result<Speed, String> {
+    s.parse()
 }
 
 /// `5s`, `250ms`, `2m`, `1h`, or plain seconds (`1.5`).
@@ -76,6 +87,8 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let opts = RunOptions {
         system_objects: install::system_objects(&root),
         trace: args.trace.clone(),
+        speed: args.speed,
+        control: args.control.clone(),
         ms_dir: args.ms_dir.clone(),
         design: args.design,
         run_for: args.run_for,

@@ -1,0 +1,100 @@
+//! The control channel: a Unix socket (`--control PATH`) taking one text command per
+//! line, answering one line each:
+//!
+//! | command | effect | answer |
+//! |---|---|---|
+//! | `status` | – | `ok t_ms=<virtual ms> speed=<factor\|max> paused=<true\|false>` |
+//! | `pause` / `resume` | stop / restart virtual time | `ok t_ms=…` |
+//! | `step [N]` | while paused, run N frames (default 1) of 8 ms | `ok t_ms=…` once they ran |
+//! | `speed <factor\|max>` | change the speed | `ok` |
+//! | `shutdown` | the Stop/Destroy sequence, as OPENR::Shutdown | `ok` |
+//!
+//! Anything else gets `error: …`. Several clients may be connected at once.
+use std::io::{BufRead, BufReader, Write};
+use std::os::unix::net::{UnixListener, UnixStream};
+use std::path::Path;
+use std::time::Duration;
+
+use crate::clock::Speed;
+use crate::error::{Error, Result};
+use crate::runtime::Runtime;
+
+/// Binds `path` and serves it on a thread of its own.
+pub fn serve(rt: &'static Runtime, path: &Path) -> Result<()> {
+    let _ = std::fs::remove_file(path);
+    let listener = UnixListener::bind(path).map_err(|e| Error::io(path, e))?;
+    std::thread::Builder::new()
+        .name("openr-control".into())
+        .spawn(move || {
+            for conn in listener.incoming().flatten() {
+                let _ = std::thread::Builder::new().name("openr-control-client".into()).spawn(move || client(rt, conn));
+            }
+        })
+        .map_err(|e| Error::io(path, e))?;
+    Ok(())
+}
+
+fn client(rt: &'static Runtime, conn: UnixStream) {
+    let Ok(mut out) = conn.try_clone() else { return };
+    for line in BufReader::new(conn).lines() {
+        let Ok(line) = line else { return };
+        let answer = command(rt, line.trim());
+        if writeln!(out, "{answer}").is_err() {
+            return;
+        }
+    }
+}
+
+fn t_ms(rt: &Runtime) -> u128 {
+    rt.clock.since_boot().as_millis()
+}
+
+/// Executes one command line and returns the answer line.
+pub fn command(rt: &Runtime, line: &str) -> String {
+    let mut words = line.split_whitespace();
+    match (words.next(), words.next(), words.next()) {
+        (Some("status"), None, _) => {
+            let speed = match rt.clock.speed() {
+                Speed::Max => "max".to_string(),
+                Speed::Factor(f) => format!("{f}"),
+            };
+            format!("ok t_ms={} speed={speed} paused={}", t_ms(rt), rt.clock.paused())
+        }
+        (Some("pause"), None, _) => {
+            rt.clock.set_paused(true);
+            format!("ok t_ms={}", t_ms(rt))
+        }
+        (Some("resume"), None, _) => {
+            rt.clock.set_paused(false);
+            format!("ok t_ms={}", t_ms(rt))
+        }
+        (Some("step"), n, None) => {
+            let frames = match n.map(str::parse::<u64>) {
+                None => 1,
+                Some(Ok(n)) if (1..=1_000_000).contains(&n) => n,
+                Some(_) => return "error: step takes a number of frames (1..1000000)".into(),
+            };
+            if !rt.clock.paused() {
+                return "error: step needs a paused clock (send `pause` first)".into();
+            }
+            let target = rt.clock.since_boot() + crate::clock::FRAME * frames as u32;
+            rt.clock.step(frames);
+            while rt.clock.since_boot() < target {
+                std::thread::sleep(Duration::from_micros(200));
+            }
+            format!("ok t_ms={}", t_ms(rt))
+        }
+        (Some("speed"), Some(v), None) => match v.parse::<Speed>() {
+            Ok(s) => {
+                rt.clock.set_speed(s);
+                "ok".into()
+            }
+            Err(e) => format!("error: {e}"),
+        },
+        (Some("shutdown"), None, _) => {
+            rt.request_shutdown();
+            "ok".into()
+        }
+        _ => format!("error: unknown command `{line}` (status, pause, resume, step [N], speed <factor|max>, shutdown)"),
+    }
+}
