@@ -101,6 +101,7 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
         clock,
         diag: opts.diag,
         shutdown_requested: AtomicBool::new(false),
+        booting: AtomicBool::new(true),
         timers: Timers::new(),
         vr: crate::vr::VrService::new(robot, trace),
         vectors: Mutex::new(Vec::new()),
@@ -119,6 +120,7 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
     rt.diag.info(&format!("loaded {} object(s) from {}", all.len(), object_cfg_path.display()));
 
     // Virtual time runs from here on: an object may sleep in its DoInit.
+    rt.clock.set_limit(opts.run_for);
     if let Some(path) = &opts.control {
         crate::control::serve(rt, path)?;
     }
@@ -136,6 +138,7 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
         let module = slot.module.get().expect("loaded");
         let _ = rt.send(slot.oid, SEL_START, module.reason_message(OREASON_BOOT));
     }
+    rt.booting.store(false, std::sync::atomic::Ordering::Release);
     rt.diag.info("all objects started");
 
     let ended = wait_for_end(rt, &signals, opts.run_for);

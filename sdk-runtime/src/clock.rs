@@ -41,6 +41,10 @@ struct State {
     paused: bool,
     /// Frames still to run while paused (`step`).
     steps: u64,
+    /// Virtual time stops here (`--for`), so a run ends on the same frame every time.
+    limit: Option<Duration>,
+    /// The frame thread is parked in `wait_runnable` (no frame in progress).
+    parked: bool,
 }
 
 pub struct Clock {
@@ -55,7 +59,7 @@ impl Clock {
     pub fn new(speed: Speed) -> Clock {
         let wall = SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs() as i64);
         Clock {
-            state: Mutex::new(State { now: Duration::ZERO, speed, paused: false, steps: 0 }),
+            state: Mutex::new(State { now: Duration::ZERO, speed, paused: false, steps: 0, limit: None, parked: false }),
             tick: Condvar::new(),
             boot_wall: wall,
             calendar: Mutex::new((0, 0)),
@@ -98,15 +102,42 @@ impl Clock {
         self.tick.notify_all();
     }
 
-    /// Frame thread: blocks while paused with no steps left; consumes one step.
+    /// Stops virtual time once it reaches `limit`.
+    pub fn set_limit(&self, limit: Option<Duration>) {
+        self.lock().limit = limit;
+        self.tick.notify_all();
+    }
+
+    /// Frame thread: blocks while paused with no steps left, or at the limit; consumes
+    /// one step.
     pub fn wait_runnable(&self) {
         let mut s = self.lock();
-        while s.paused && s.steps == 0 {
+        while (s.paused && s.steps == 0) || s.limit.is_some_and(|l| s.now >= l) {
+            s.parked = true;
+            self.tick.notify_all();
             s = self.tick.wait(s).unwrap_or_else(|p| p.into_inner());
         }
+        s.parked = false;
         if s.paused {
             s.steps -= 1;
         }
+    }
+
+    /// Pauses and returns once no frame is in progress: the time returned is the time
+    /// at which the robot stands still. `timeout` bounds the wait (frame thread absent).
+    pub fn pause_settled(&self, timeout: Duration) -> Duration {
+        let mut s = self.lock();
+        s.paused = true;
+        s.steps = 0;
+        let deadline = std::time::Instant::now() + timeout;
+        while !s.parked {
+            let now = std::time::Instant::now();
+            if now >= deadline {
+                break;
+            }
+            s = self.tick.wait_timeout(s, deadline - now).unwrap_or_else(|p| p.into_inner()).0;
+        }
+        s.now
     }
 
     /// Frame thread: one frame has run.

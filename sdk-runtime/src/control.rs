@@ -61,8 +61,8 @@ pub fn command(rt: &Runtime, line: &str) -> String {
             format!("ok t_ms={} speed={speed} paused={}", t_ms(rt), rt.clock.paused())
         }
         (Some("pause"), None, _) => {
-            rt.clock.set_paused(true);
-            format!("ok t_ms={}", t_ms(rt))
+            let at = rt.clock.pause_settled(Duration::from_secs(5));
+            format!("ok t_ms={}", at.as_millis())
         }
         (Some("resume"), None, _) => {
             rt.clock.set_paused(false);
@@ -82,7 +82,8 @@ pub fn command(rt: &Runtime, line: &str) -> String {
             while rt.clock.since_boot() < target {
                 std::thread::sleep(Duration::from_micros(200));
             }
-            format!("ok t_ms={}", t_ms(rt))
+            let at = rt.clock.pause_settled(Duration::from_secs(5));
+            format!("ok t_ms={}", at.as_millis())
         }
         (Some("speed"), Some(v), None) => match v.parse::<Speed>() {
             Ok(s) => {

@@ -62,6 +62,9 @@ pub struct Runtime {
     /// Data vectors handed out by `new_vector` (freed by `delete_vector`).
     pub vectors: Mutex<Vec<u32>>,
     pub shutdown_requested: AtomicBool,
+    /// True until every Start has been sent: at `--speed max` virtual time waits for the
+    /// boot sequence too (unless an object sleeps in it), so runs are reproducible.
+    pub booting: AtomicBool,
 }
 
 static RUNTIME: OnceLock<Runtime> = OnceLock::new();
@@ -110,9 +113,12 @@ impl Runtime {
         enqueue(&slot, Envelope { selector, data, reply: None })
     }
 
-    /// Whether every object is idle (nothing queued or running).
+    /// Whether every object is idle (nothing queued or running) and the boot sequence is
+    /// not between two steps — or an object waits for virtual time to pass.
     pub fn quiescent(&self) -> bool {
-        self.objects.read().unwrap_or_else(|p| p.into_inner()).iter().all(|s| s.is_idle())
+        let objects = self.objects.read().unwrap_or_else(|p| p.into_inner());
+        let sleeping = objects.iter().any(|s| s.sleeping.load(Ordering::Acquire));
+        objects.iter().all(|s| s.is_idle()) && (sleeping || !self.booting.load(Ordering::Acquire))
     }
 
     /// Sends and waits for the answer (`Call`), at most `timeout` if given.

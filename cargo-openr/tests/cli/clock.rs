@@ -1,0 +1,87 @@
+//! Virtual time: `--speed max` runs are reproducible, `--for` counts virtual time, and
+//! the control socket pauses, steps and resumes the robot.
+use std::io::{BufRead, BufReader, Write};
+use std::os::unix::net::UnixStream;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::support::{build, exe, run_ms, sdk_root};
+
+#[test]
+fn runs_at_max_speed_are_byte_identical() {
+    let p = build("movelegs");
+    let dir = tempfile::tempdir().unwrap();
+    let mut outputs = Vec::new();
+    for i in 0..2 {
+        let trace = dir.path().join(format!("t{i}.jsonl"));
+        let out = run_ms(&p.ms(), &["--speed", "max", "--for", "6s", "--trace", trace.to_str().unwrap()]);
+        assert_eq!(out.code, Some(0), "{}", out.stderr);
+        outputs.push((out.stdout, std::fs::read_to_string(&trace).unwrap()));
+    }
+    assert_eq!(outputs[0].0, outputs[1].0, "same console output");
+    assert!(outputs[0].1 == outputs[1].1, "same trace, byte for byte");
+    let last: serde_json::Value = serde_json::from_str(outputs[0].1.lines().last().unwrap()).unwrap();
+    let t = last["t_ms"].as_u64().unwrap();
+    assert!((5900..=6000).contains(&t), "--for 6s is virtual time: the trace ends at {t} ms");
+    assert!(outputs[0].0.contains("MovingLegs : done"), "the whole program ran:\n{}", outputs[0].0);
+}
+
+fn ask(conn: &mut UnixStream, reader: &mut BufReader<UnixStream>, cmd: &str) -> String {
+    writeln!(conn, "{cmd}").unwrap();
+    let mut line = String::new();
+    reader.read_line(&mut line).unwrap();
+    line.trim().to_string()
+}
+
+fn t_ms(answer: &str) -> u64 {
+    answer.split_whitespace().find_map(|w| w.strip_prefix("t_ms=")).and_then(|v| v.parse().ok()).unwrap_or_else(|| panic!("no t_ms in {answer:?}"))
+}
+
+#[test]
+fn control_socket_pauses_steps_and_resumes() {
+    let p = build("movelegs");
+    let dir = tempfile::tempdir().unwrap();
+    let sock = dir.path().join("control.sock");
+    let mut child = Command::new(exe())
+        .env("OPENRSDK_ROOT", sdk_root())
+        .args(["run", "-q", "--control", sock.to_str().unwrap()])
+        .arg(p.ms())
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    let mut conn = loop {
+        match UnixStream::connect(&sock) {
+            Ok(c) => break c,
+            Err(_) if start.elapsed() < Duration::from_secs(30) => std::thread::sleep(Duration::from_millis(20)),
+            Err(e) => panic!("no control socket: {e}"),
+        }
+    };
+    let mut reader = BufReader::new(conn.try_clone().unwrap());
+    let paused = ask(&mut conn, &mut reader, "pause");
+    assert!(paused.starts_with("ok t_ms="), "{paused}");
+    std::thread::sleep(Duration::from_millis(100));
+    let status = ask(&mut conn, &mut reader, "status");
+    assert!(status.contains("paused=true"), "{status}");
+    assert_eq!(t_ms(&status), t_ms(&paused), "no virtual time passes while paused");
+    let stepped = ask(&mut conn, &mut reader, "step 10");
+    assert_eq!(t_ms(&stepped), t_ms(&paused) + 80, "10 frames of 8 ms: {stepped}");
+    assert!(ask(&mut conn, &mut reader, "speed fast").starts_with("error: "));
+    assert!(ask(&mut conn, &mut reader, "jump").starts_with("error: unknown command"));
+    assert_eq!(ask(&mut conn, &mut reader, "speed max"), "ok");
+    assert!(ask(&mut conn, &mut reader, "resume").starts_with("ok"));
+    std::thread::sleep(Duration::from_millis(200));
+    let later = ask(&mut conn, &mut reader, "status");
+    assert!(t_ms(&later) > t_ms(&stepped), "time runs again: {later}");
+    assert_eq!(ask(&mut conn, &mut reader, "shutdown"), "ok");
+    let status = loop {
+        if let Some(st) = child.try_wait().unwrap() {
+            break st;
+        }
+        assert!(start.elapsed() < Duration::from_secs(60), "runtime did not stop");
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    assert!(status.success());
+}
