@@ -24,12 +24,14 @@
 //! `completed` token, publish `sensor_vector` if present, capture an image if
 //! `camera_due`, a mic block if `mic_due`, and append `trace` lines.
 
+pub mod camera;
 pub mod effector;
 pub mod frame_clock;
 pub mod image;
 pub mod kinematics;
 pub mod model;
 mod model_ers2xx;
+pub mod render;
 pub mod scene;
 pub mod status;
 pub mod sync;
@@ -100,6 +102,7 @@ pub struct VirtualRobot {
     latest: HashMap<PrimitiveId, SensorValue>,
     pending_trace: Vec<TraceEvent>,
     trace_enabled: bool,
+    camera: camera::Camera,
 }
 
 impl VirtualRobot {
@@ -126,6 +129,7 @@ impl VirtualRobot {
             latest,
             pending_trace: Vec::new(),
             trace_enabled: true,
+            camera: camera::Camera::new(design),
         }
     }
 
@@ -414,6 +418,66 @@ impl VirtualRobot {
 
     pub fn primitive_of(&self, part: Part) -> Option<PrimitiveId> {
         self.model.by_part(part).map(|p| p.id)
+    }
+
+    // -- camera (robot-api 6.6, 6.7, 8.4) ---------------------------------------------
+
+    /// `SetCdtVectorData`: loads the first `numData` colour-detection tables of an
+    /// `OCdtVectorData` (effective from the next image). oSUCCESS, oINVALID_ARG (channel
+    /// 0, not a single bit, or channel 7 on ERS-7), oINVALID_PRIMITIVE_ID (not the
+    /// camera), oINVALID_DATA_TYPE (vector or info type), oFAIL (truncated/too many).
+    pub fn set_cdt(&mut self, bytes: &[u8]) -> OStatus {
+        let Some(cam) = self.primitive_of(Part::Camera) else { return O_FAIL };
+        match camera::parse_cdt(bytes, cam, self.design()) {
+            Ok(tables) => {
+                for t in &tables {
+                    self.camera.lut.load(t);
+                }
+                O_SUCCESS
+            }
+            Err(e) => e,
+        }
+    }
+
+    /// Replaces the rendered scene by an image file or a directory of frames (binary
+    /// PPM P6 or uncompressed 24/32-bit BMP, any size, scaled nearest-neighbour to the
+    /// sensor resolution; frames cycled in file-name order, one per image). `None`
+    /// returns to the rendered scene. Returns the number of frames.
+    pub fn set_image_source(&mut self, path: Option<&std::path::Path>) -> Result<usize, camera::ImageError> {
+        self.camera.source = match path {
+            Some(p) => Some(camera::FileSource::open(p)?),
+            None => None,
+        };
+        Ok(self.camera.source.as_ref().map_or(0, |s| s.paths.len()))
+    }
+
+    /// The camera pinhole model at the current joint angles and posture.
+    pub fn camera_model(&self) -> render::PinholeCamera {
+        render::PinholeCamera::new(self.design(), render::camera_pose(&self.body, &self.scene))
+    }
+
+    /// Takes a picture now: renders the scene (or the next replacement frame) and
+    /// writes a complete `OFbkImageVectorData` into `out` (resized to
+    /// [`image::ImageLayout::size`]): header type 1027, 4 infos with the camera's
+    /// primitive ID and `frameNumber` = `frame`, H/M/L/C layers and tags. The field
+    /// counter advances by one per call.
+    pub fn render_image(&mut self, frame: u32, out: &mut Vec<u8>) {
+        if !self.camera.fill_from_source() {
+            let cam = self.camera_model();
+            cam.render(&self.scene.camera, self.scene.wall_mm, &mut self.camera.rgb.data);
+        }
+        let id = self.primitive_of(Part::Camera).unwrap_or(PRIMITIVE_ID_UNDEF);
+        self.camera.build_vector(id, frame, out);
+    }
+
+    /// The sensor-resolution RGB image of the last [`VirtualRobot::render_image`].
+    pub fn camera_rgb(&self) -> &camera::RgbImage {
+        &self.camera.rgb
+    }
+
+    /// Camera state (CDT tables, field counter, last CDT counts).
+    pub fn camera(&self) -> &camera::Camera {
+        &self.camera
     }
 
     // -- the frame ---------------------------------------------------------------------

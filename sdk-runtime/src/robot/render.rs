@@ -45,9 +45,10 @@ pub struct Ball {
 }
 
 impl Default for Ball {
-    /// The AIBO pink ball (radius 40 mm) 700 mm in front of the robot.
+    /// The AIBO pink ball (radius 40 mm) 1 m in front of the robot (in the lower
+    /// third of the image when standing with the head level).
     fn default() -> Ball {
-        Ball { x_mm: 700.0, y_mm: 0.0, radius_mm: 40.0, rgb: PINK }
+        Ball { x_mm: 1000.0, y_mm: 0.0, radius_mm: 40.0, rgb: PINK }
     }
 }
 

@@ -41,6 +41,7 @@ use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use super::kinematics::Body;
+use super::render::CameraWorld;
 use super::model::{Leg, Part, PrimitiveId, PrimitiveKind, SensorKind};
 use super::vectors::SensorValue;
 
@@ -77,6 +78,8 @@ pub struct Scene {
     /// Extra tilt of the ground/holder, degrees (added to the posture).
     pub extra_pitch_deg: f64,
     pub extra_roll_deg: f64,
+    /// What the camera sees: ball, field, colours (see [`super::render`]).
+    pub camera: CameraWorld,
 }
 
 impl Default for Scene {
@@ -96,6 +99,7 @@ impl Default for Scene {
             temperature_c: 30.0,
             extra_pitch_deg: 0.0,
             extra_roll_deg: 0.0,
+            camera: CameraWorld::default(),
         }
     }
 }

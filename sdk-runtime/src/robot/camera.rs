@@ -1,0 +1,657 @@
+//! The virtual camera: colour detection tables (`SetCdtVectorData`), replacement image
+//! sources (PPM/BMP files), and synthesis of the four `OFbkImageVectorData` layers from a
+//! sensor-resolution RGB image (robot-api 6.6, 6.7, 8.4; ers7-model 9).
+//!
+//! Why it exists: [`super::VirtualRobot::render_image`] must hand the camera system
+//! object a complete image vector each camera frame, cheaply enough for several robots
+//! at 30 fps.
+//!
+//! Synthesis (robot-api 6.6):
+//! * RGB → Y, Cr, Cb: Y = (0.51·R + G + 0.19·B)/1.70, Cr = 128 + 128·(R−Y)/255,
+//!   Cb = 128 + 128·(B−Y)/255 (fixed point, rounded, clipped to 0..255).
+//! * Layer H (sensor size / 2): for each 2×2 block (a b / c d) of sensor-resolution
+//!   luminance: Y_LL = (a+b+c+d)/4, Y_LH = (c+d−a−b)/4 + 128, Y_HL = (b+d−a−c)/4 + 128,
+//!   Y_HH = (a+d−b−c)/4 + 128; Cr/Cb from the block's mean colour.
+//! * Layers M and L: the same, taking the previous layer's Y_LL band as the
+//!   double-resolution luminance and averaging its Cr/Cb over 2×2 blocks.
+//! * Layer C (the M resolution): bit k set when the M pixel's (Cr, Cb) lies inside
+//!   channel k's table row for its Y segment (Y >> 3). Unloaded channels never match.
+//! * Tag: the first 16 bytes of the last row of every band of every layer
+//!   ([`ImageLayout::write_tags`]): field counter (+1 per image, starting at 1) and
+//!   `ColorFrequency` = matched CDT pixels / 16. The count covers every CDT pixel except
+//!   the 16 tag bytes (they hold no pixels), so it equals the number of set bits a
+//!   program finds when it skips the tag.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use super::image::{ImageLayout, LayerLayout, TAG_SIZE};
+use super::model::{Design, PrimitiveId};
+use super::status::*;
+use super::vectors::{odata, rd_u32, VectorHeader, HEADER_SIZE};
+
+// ---------------------------------------------------------------------------------
+// colour conversion
+
+/// Fixed-point (×65536) luminance weights 0.51/1.7, 1/1.7, 0.19/1.7 (sum 65536).
+const KY: [i32; 3] = [19_661, 38_550, 7_325];
+
+#[inline]
+fn luma(r: i32, g: i32, b: i32) -> i32 {
+    (KY[0] * r + KY[1] * g + KY[2] * b + 32_768) >> 16
+}
+
+/// Rounded `n / d` for d > 0.
+#[inline]
+fn div_round(n: i32, d: i32) -> i32 {
+    (2 * n + d).div_euclid(2 * d)
+}
+
+#[inline]
+fn clip(v: i32) -> u8 {
+    v.clamp(0, 255) as u8
+}
+
+/// RGB → (Y, Cr, Cb) (robot-api 6.6).
+pub fn rgb_to_ycrcb(rgb: [u8; 3]) -> [u8; 3] {
+    let [r, g, b] = rgb.map(i32::from);
+    let y = luma(r, g, b);
+    [clip(y), clip(128 + div_round(128 * (r - y), 255)), clip(128 + div_round(128 * (b - y), 255))]
+}
+
+/// (Y, Cr, Cb) → RGB (robot-api 6.6: R = Y + 2·(Cr−128)·255/256, B likewise,
+/// G = Y − 0.51·(R−Y) − 0.19·(B−Y)).
+pub fn ycrcb_to_rgb(ycc: [u8; 3]) -> [u8; 3] {
+    let y = ycc[0] as f64;
+    let r = y + 2.0 * (ycc[1] as f64 - 128.0) * 255.0 / 256.0;
+    let b = y + 2.0 * (ycc[2] as f64 - 128.0) * 255.0 / 256.0;
+    let g = y - 0.51 * (r - y) - 0.19 * (b - y);
+    [r, g, b].map(|v| v.round().clamp(0.0, 255.0) as u8)
+}
+
+// ---------------------------------------------------------------------------------
+// CDT
+
+pub const CDT_CHANNELS: usize = 8;
+pub const CDT_SEGMENTS: usize = 32;
+pub const CDT_INFO_SIZE: usize = 144;
+const ODATA_CDT: u32 = 21;
+
+/// One parsed `OCdtInfo`: channel index (0..7) and its 32 packed entries.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CdtTable {
+    pub channel: usize,
+    pub entries: [u32; CDT_SEGMENTS],
+}
+
+/// Parses the first `numData` infos of an `OCdtVectorData` (robot-api 6.7). Every info
+/// must be type odataCDT, name `camera` and have a single-bit channel (not 0x80 on
+/// ERS-7); nothing is loaded unless all are valid. Errors: `oINVALID_DATA_TYPE`
+/// (vector type ≠ 1028 or info type ≠ 21), `oINVALID_PRIMITIVE_ID`, `oINVALID_ARG`
+/// (bad channel), `oFAIL` (truncated vector, numData > 8 or > maxNumData).
+pub fn parse_cdt(bytes: &[u8], camera: PrimitiveId, design: Design) -> Result<Vec<CdtTable>, OStatus> {
+    let h = VectorHeader::read(bytes).map_err(|_| O_FAIL)?;
+    if h.vector_type != odata::CDT_VECTOR {
+        return Err(O_INVALID_DATA_TYPE);
+    }
+    let n = h.num_data as usize;
+    if n > CDT_CHANNELS || h.num_data > h.max_num_data {
+        return Err(O_FAIL);
+    }
+    if bytes.len() < HEADER_SIZE + n * CDT_INFO_SIZE {
+        return Err(O_FAIL);
+    }
+    let mut out = Vec::with_capacity(n);
+    for i in 0..n {
+        let o = HEADER_SIZE + i * CDT_INFO_SIZE;
+        let rd = |k: usize| rd_u32(bytes, o + k).map_err(|_| O_FAIL);
+        if rd(0)? != ODATA_CDT {
+            return Err(O_INVALID_DATA_TYPE);
+        }
+        if rd(4)? != camera {
+            return Err(O_INVALID_PRIMITIVE_ID);
+        }
+        let chan = rd(8)?;
+        let max_chan = if design == Design::Ers7 { 0x40 } else { 0x80 };
+        if chan == 0 || !chan.is_power_of_two() || chan > max_chan {
+            return Err(O_INVALID_ARG);
+        }
+        let mut entries = [0u32; CDT_SEGMENTS];
+        for (s, e) in entries.iter_mut().enumerate() {
+            *e = rd(12 + 4 * s)?;
+        }
+        out.push(CdtTable { channel: chan.trailing_zeros() as usize, entries });
+    }
+    Ok(out)
+}
+
+/// Builds an `OCdtVectorData` (as `NewCdtVectorData` + `Init`/`Set` would) — for tests
+/// and tools. `tables`: (channel bit, entries).
+pub fn build_cdt_vector(camera: PrimitiveId, tables: &[(u32, [u32; CDT_SEGMENTS])]) -> Vec<u8> {
+    let mut b = vec![0u8; 4096];
+    let h = VectorHeader {
+        total_size: 4096,
+        vector_type: odata::CDT_VECTOR,
+        info_offset: HEADER_SIZE as u32,
+        info_size: CDT_INFO_SIZE as u32,
+        max_num_data: CDT_CHANNELS as u32,
+        num_data: tables.len() as u32,
+        sync_key: 0xFFFF_FFFF,
+        ..VectorHeader::default()
+    };
+    h.write(&mut b).expect("fits");
+    for i in 0..CDT_CHANNELS {
+        let o = HEADER_SIZE + i * CDT_INFO_SIZE;
+        let (chan, entries) = tables.get(i).copied().unwrap_or((0, [0x8080_8080; CDT_SEGMENTS]));
+        let id = if i < tables.len() { camera } else { 0xFFFF_FFFF };
+        let mut put = |k: usize, v: u32| b[o + k..o + k + 4].copy_from_slice(&v.to_le_bytes());
+        put(0, ODATA_CDT);
+        put(4, id);
+        put(8, chan);
+        for (s, e) in entries.iter().enumerate() {
+            put(12 + 4 * s, *e);
+        }
+    }
+    b
+}
+
+/// Packs one table entry like `OCdtInfo::Set(seg, crMax, crMin, cbMax, cbMin)`.
+pub fn cdt_entry(cr_max: u8, cr_min: u8, cb_max: u8, cb_min: u8) -> u32 {
+    cr_min as u32 | (cr_max as u32) << 8 | (cb_min as u32) << 16 | (cb_max as u32) << 24
+}
+
+/// The loaded tables as two lookup tables: bit k of `cr[seg][cr]` is set when Cr lies
+/// in channel k's Cr range for that Y segment (likewise `cb`).
+#[derive(Clone, Debug)]
+pub struct CdtLut {
+    tables: [Option<[u32; CDT_SEGMENTS]>; CDT_CHANNELS],
+    cr: Vec<u8>,
+    cb: Vec<u8>,
+}
+
+impl Default for CdtLut {
+    fn default() -> CdtLut {
+        CdtLut { tables: [None; CDT_CHANNELS], cr: vec![0; CDT_SEGMENTS * 256], cb: vec![0; CDT_SEGMENTS * 256] }
+    }
+}
+
+impl CdtLut {
+    pub fn load(&mut self, t: &CdtTable) {
+        self.tables[t.channel] = Some(t.entries);
+        self.rebuild();
+    }
+
+    pub fn table(&self, channel: usize) -> Option<&[u32; CDT_SEGMENTS]> {
+        self.tables.get(channel)?.as_ref()
+    }
+
+    fn rebuild(&mut self) {
+        self.cr.fill(0);
+        self.cb.fill(0);
+        for (k, t) in self.tables.iter().enumerate() {
+            let Some(t) = t else { continue };
+            for (seg, &e) in t.iter().enumerate() {
+                let [cr_min, cr_max, cb_min, cb_max] = e.to_le_bytes();
+                for v in cr_min..=cr_max {
+                    self.cr[seg * 256 + v as usize] |= 1 << k;
+                }
+                for v in cb_min..=cb_max {
+                    self.cb[seg * 256 + v as usize] |= 1 << k;
+                }
+            }
+        }
+    }
+
+    /// CDT bits of one pixel (the rule of robot-api 6.7).
+    #[inline]
+    pub fn classify(&self, y: u8, cr: u8, cb: u8) -> u8 {
+        let row = (y as usize >> 3) * 256;
+        self.cr[row + cr as usize] & self.cb[row + cb as usize]
+    }
+}
+
+// ---------------------------------------------------------------------------------
+// images
+
+/// An RGB image, row-major, 3 bytes per pixel.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct RgbImage {
+    pub width: usize,
+    pub height: usize,
+    pub data: Vec<u8>,
+}
+
+impl RgbImage {
+    pub fn pixel(&self, x: usize, y: usize) -> [u8; 3] {
+        let o = (y * self.width + x) * 3;
+        [self.data[o], self.data[o + 1], self.data[o + 2]]
+    }
+
+    /// Nearest-neighbour scaling into `out` (resized to `w × h`).
+    pub fn scale_into(&self, w: usize, h: usize, out: &mut Vec<u8>) {
+        out.resize(w * h * 3, 0);
+        if self.width == 0 || self.height == 0 {
+            out.fill(128);
+            return;
+        }
+        for y in 0..h {
+            let sy = y * self.height / h;
+            for x in 0..w {
+                let sx = x * self.width / w;
+                let s = (sy * self.width + sx) * 3;
+                let d = (y * w + x) * 3;
+                out[d..d + 3].copy_from_slice(&self.data[s..s + 3]);
+            }
+        }
+    }
+}
+
+/// Why an image file could not be used.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ImageError(pub String);
+
+impl std::fmt::Display for ImageError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for ImageError {}
+
+fn err<T>(msg: impl Into<String>) -> Result<T, ImageError> {
+    Err(ImageError(msg.into()))
+}
+
+/// Decodes a binary PPM (P6, maxval 1..65535, comments allowed).
+pub fn decode_ppm(bytes: &[u8]) -> Result<RgbImage, ImageError> {
+    if !bytes.starts_with(b"P6") {
+        return err("not a binary PPM (P6)");
+    }
+    let mut pos = 2;
+    let mut fields = [0usize; 3];
+    for f in fields.iter_mut() {
+        loop {
+            match bytes.get(pos) {
+                Some(c) if c.is_ascii_whitespace() => pos += 1,
+                Some(b'#') => {
+                    while bytes.get(pos).is_some_and(|&c| c != b'\n') {
+                        pos += 1;
+                    }
+                }
+                _ => break,
+            }
+        }
+        let start = pos;
+        while bytes.get(pos).is_some_and(u8::is_ascii_digit) {
+            pos += 1;
+        }
+        let s = std::str::from_utf8(&bytes[start..pos]).unwrap_or("");
+        *f = s.parse().map_err(|_| ImageError("bad PPM header".into()))?;
+    }
+    if !bytes.get(pos).is_some_and(u8::is_ascii_whitespace) {
+        return err("bad PPM header");
+    }
+    pos += 1;
+    let [w, h, maxval] = fields;
+    if w == 0 || h == 0 || maxval == 0 || maxval > 65535 || w.saturating_mul(h) > 1 << 26 {
+        return err("unsupported PPM size or maxval");
+    }
+    let bps = if maxval > 255 { 2 } else { 1 };
+    let need = w * h * 3 * bps;
+    let Some(raw) = bytes.get(pos..pos + need) else { return err("truncated PPM") };
+    let data = if bps == 1 {
+        if maxval == 255 {
+            raw.to_vec()
+        } else {
+            raw.iter().map(|&v| ((v as usize * 255 + maxval / 2) / maxval).min(255) as u8).collect()
+        }
+    } else {
+        raw.chunks_exact(2).map(|c| ((u16::from_be_bytes([c[0], c[1]]) as usize * 255 + maxval / 2) / maxval).min(255) as u8).collect()
+    };
+    Ok(RgbImage { width: w, height: h, data })
+}
+
+/// Decodes an uncompressed 24-bit (or 32-bit) BMP (BITMAPINFOHEADER or later, or
+/// BITMAPCOREHEADER; bottom-up or top-down).
+pub fn decode_bmp(bytes: &[u8]) -> Result<RgbImage, ImageError> {
+    let u16at = |o: usize| bytes.get(o..o + 2).map(|b| u16::from_le_bytes([b[0], b[1]]));
+    let u32at = |o: usize| bytes.get(o..o + 4).map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]));
+    if !bytes.starts_with(b"BM") {
+        return err("not a BMP");
+    }
+    let (Some(data_off), Some(dib)) = (u32at(10), u32at(14)) else { return err("truncated BMP") };
+    let (w, h, bpp, compression) = if dib == 12 {
+        let (Some(w), Some(h), Some(bpp)) = (u16at(18), u16at(20), u16at(24)) else { return err("truncated BMP") };
+        (w as i64, h as i64, bpp, 0)
+    } else if dib >= 40 {
+        let (Some(w), Some(h), Some(bpp), Some(c)) = (u32at(18), u32at(22), u16at(28), u32at(30)) else { return err("truncated BMP") };
+        (w as i32 as i64, h as i32 as i64, bpp, c)
+    } else {
+        return err("unsupported BMP header");
+    };
+    if compression != 0 || !(bpp == 24 || bpp == 32) {
+        return err("only uncompressed 24/32-bit BMP files are supported");
+    }
+    let top_down = h < 0;
+    let (w, h) = (w.unsigned_abs() as usize, h.unsigned_abs() as usize);
+    if w == 0 || h == 0 || w.saturating_mul(h) > 1 << 26 {
+        return err("unsupported BMP size");
+    }
+    let bpp = bpp as usize / 8;
+    let stride = (w * bpp).div_ceil(4) * 4;
+    let off = data_off as usize;
+    let Some(pixels) = bytes.get(off..off.saturating_add(stride * h)) else { return err("truncated BMP") };
+    let mut data = vec![0u8; w * h * 3];
+    for y in 0..h {
+        let src_row = if top_down { y } else { h - 1 - y };
+        let src = &pixels[src_row * stride..src_row * stride + w * bpp];
+        for (x, p) in src.chunks_exact(bpp).enumerate() {
+            data[(y * w + x) * 3..(y * w + x) * 3 + 3].copy_from_slice(&[p[2], p[1], p[0]]);
+        }
+    }
+    Ok(RgbImage { width: w, height: h, data })
+}
+
+/// Decodes a PPM or BMP file (by content).
+pub fn load_image(path: &Path) -> Result<RgbImage, ImageError> {
+    let bytes = fs::read(path).map_err(|e| ImageError(format!("{}: {e}", path.display())))?;
+    let r = if bytes.starts_with(b"BM") { decode_bmp(&bytes) } else { decode_ppm(&bytes) };
+    r.map_err(|e| ImageError(format!("{}: {}", path.display(), e.0)))
+}
+
+fn is_image_name(p: &Path) -> bool {
+    p.extension().and_then(|e| e.to_str()).is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "ppm" | "bmp"))
+}
+
+/// Replacement frames instead of the rendered scene.
+#[derive(Clone, Debug, Default)]
+pub struct FileSource {
+    /// Frames in file-name order.
+    pub paths: Vec<PathBuf>,
+    next: usize,
+    /// (index, the frame scaled to sensor resolution).
+    cache: Option<(usize, Vec<u8>)>,
+}
+
+impl FileSource {
+    /// A single image file or a directory of `*.ppm` / `*.bmp` frames. The first frame
+    /// is decoded now to catch errors early; the others when they are due (a frame that
+    /// fails later is shown mid-grey).
+    pub fn open(path: &Path) -> Result<FileSource, ImageError> {
+        let paths = if path.is_dir() {
+            let mut v: Vec<PathBuf> = fs::read_dir(path)
+                .map_err(|e| ImageError(format!("{}: {e}", path.display())))?
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.is_file() && is_image_name(p))
+                .collect();
+            v.sort_by(|a, b| a.file_name().cmp(&b.file_name()));
+            if v.is_empty() {
+                return err(format!("{}: no .ppm or .bmp frames", path.display()));
+            }
+            v
+        } else {
+            vec![path.to_path_buf()]
+        };
+        load_image(&paths[0])?;
+        Ok(FileSource { paths, next: 0, cache: None })
+    }
+
+    /// Writes the next frame (scaled to `w × h`) into `rgb` and advances.
+    fn next_frame(&mut self, w: usize, h: usize, rgb: &mut Vec<u8>) {
+        let i = self.next % self.paths.len();
+        self.next = (i + 1) % self.paths.len();
+        match &self.cache {
+            Some((ci, data)) if *ci == i && data.len() == w * h * 3 => {
+                rgb.clear();
+                rgb.extend_from_slice(data);
+            }
+            _ => {
+                match load_image(&self.paths[i]) {
+                    Ok(img) => img.scale_into(w, h, rgb),
+                    Err(_) => {
+                        rgb.clear();
+                        rgb.resize(w * h * 3, 128);
+                    }
+                }
+                if self.paths.len() == 1 {
+                    self.cache = Some((i, rgb.clone()));
+                }
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------
+// layer synthesis
+
+/// Writes layer H of `layout` from the sensor-resolution RGB image (`2w × 2h`).
+fn synth_from_rgb(l: &LayerLayout, rgb: &[u8], dst: &mut [u8]) {
+    let (w, h) = (l.width, l.height);
+    let sw = 2 * w;
+    let stride = l.row_stride();
+    for y in 0..h {
+        let row = &mut dst[y * stride..(y + 1) * stride];
+        let (yll, rest) = row.split_at_mut(w);
+        let (cr, rest) = rest.split_at_mut(w);
+        let (cb, rest) = rest.split_at_mut(w);
+        let (lh, rest) = rest.split_at_mut(w);
+        let (hl, hh) = rest.split_at_mut(w);
+        let top = &rgb[2 * y * sw * 3..(2 * y + 1) * sw * 3];
+        let bot = &rgb[(2 * y + 1) * sw * 3..(2 * y + 2) * sw * 3];
+        for x in 0..w {
+            let p = |r: &[u8], i: usize| (r[i] as i32, r[i + 1] as i32, r[i + 2] as i32);
+            let (r0, g0, b0) = p(top, 6 * x);
+            let (r1, g1, b1) = p(top, 6 * x + 3);
+            let (r2, g2, b2) = p(bot, 6 * x);
+            let (r3, g3, b3) = p(bot, 6 * x + 3);
+            let a = luma(r0, g0, b0);
+            let b = luma(r1, g1, b1);
+            let c = luma(r2, g2, b2);
+            let d = luma(r3, g3, b3);
+            let sy = a + b + c + d;
+            yll[x] = clip(div_round(sy, 4));
+            lh[x] = clip(128 + div_round(c + d - a - b, 4));
+            hl[x] = clip(128 + div_round(b + d - a - c, 4));
+            hh[x] = clip(128 + div_round(a + d - b - c, 4));
+            let sr = r0 + r1 + r2 + r3;
+            let sb = b0 + b1 + b2 + b3;
+            cr[x] = clip(128 + div_round(128 * (sr - sy), 1020));
+            cb[x] = clip(128 + div_round(128 * (sb - sy), 1020));
+        }
+    }
+}
+
+/// Writes an HPF layer `l` from the Y/Cr/Cb bands of the previous (double-size) HPF
+/// layer `src` (whose data is `s`).
+fn synth_from_layer(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8]) {
+    let (w, h) = (l.width, l.height);
+    let ss = src.row_stride();
+    let sw = src.width;
+    let stride = l.row_stride();
+    for y in 0..h {
+        let top = &s[2 * y * ss..(2 * y + 1) * ss];
+        let bot = &s[(2 * y + 1) * ss..(2 * y + 2) * ss];
+        let row = &mut dst[y * stride..(y + 1) * stride];
+        for x in 0..w {
+            let q = |band: usize| {
+                let i = band * sw + 2 * x;
+                (top[i] as i32, top[i + 1] as i32, bot[i] as i32, bot[i + 1] as i32)
+            };
+            let (a, b, c, d) = q(0);
+            let (cr0, cr1, cr2, cr3) = q(1);
+            let (cb0, cb1, cb2, cb3) = q(2);
+            row[x] = clip(div_round(a + b + c + d, 4));
+            row[w + x] = clip(div_round(cr0 + cr1 + cr2 + cr3, 4));
+            row[2 * w + x] = clip(div_round(cb0 + cb1 + cb2 + cb3, 4));
+            row[3 * w + x] = clip(128 + div_round(c + d - a - b, 4));
+            row[4 * w + x] = clip(128 + div_round(b + d - a - c, 4));
+            row[5 * w + x] = clip(128 + div_round(a + d - b - c, 4));
+        }
+    }
+}
+
+/// Writes the CDT layer `l` from an HPF layer of the same size; returns per-channel
+/// counts of matched pixels (excluding the tag bytes).
+fn synth_cdt(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8], lut: &CdtLut) -> [u32; CDT_CHANNELS] {
+    let mut counts = [0u32; CDT_CHANNELS];
+    let (w, h) = (l.width.min(src.width), l.height.min(src.height));
+    for y in 0..h {
+        let srow = &s[y * src.row_stride()..];
+        let drow = &mut dst[y * l.row_stride()..y * l.row_stride() + l.width];
+        for x in 0..w {
+            let bits = lut.classify(srow[x], srow[src.width + x], srow[2 * src.width + x]);
+            drow[x] = bits;
+            if bits != 0 && !(y + 1 == l.height && x < TAG_SIZE) {
+                for (k, c) in counts.iter_mut().enumerate() {
+                    *c += (bits >> k) as u32 & 1;
+                }
+            }
+        }
+    }
+    counts
+}
+
+/// Fills the four layers of `buf` (an image vector of `layout`) from a sensor-size
+/// RGB image and writes the tags. Returns the per-channel CDT pixel counts.
+pub fn synthesize(layout: &ImageLayout, rgb: &[u8], lut: &CdtLut, field_counter: u32, buf: &mut [u8]) -> [u32; CDT_CHANNELS] {
+    let [lh, lm, ll, lc] = layout.layers;
+    debug_assert!(lh.data_offset + lh.data_size() <= lm.data_offset && lm.data_offset + lm.data_size() <= ll.data_offset);
+    debug_assert!(ll.data_offset + ll.data_size() <= lc.data_offset && rgb.len() >= 4 * lh.width * lh.height * 3);
+    let (_, rest) = buf.split_at_mut(lh.data_offset);
+    let (h, rest) = rest.split_at_mut(lm.data_offset - lh.data_offset);
+    let (m, rest) = rest.split_at_mut(ll.data_offset - lm.data_offset);
+    let (l, rest) = rest.split_at_mut(lc.data_offset - ll.data_offset);
+    synth_from_rgb(&lh, rgb, h);
+    synth_from_layer(&lh, h, &lm, m);
+    synth_from_layer(&lm, m, &ll, l);
+    let counts = synth_cdt(&lm, m, &lc, rest, lut);
+    layout.write_tags(buf, field_counter, counts).expect("buffer sized to layout");
+    counts
+}
+
+/// Converts a layer of an image vector back to RGB (robot-api 6.6 inverse formulas).
+/// HPF layers are reconstructed at double resolution (each 2×2 block shares its
+/// Cr/Cb); a plain YCrCb layer at its own size; None for the CDT layer or a bad buffer.
+/// The tag bytes are converted like pixels.
+pub fn layer_to_rgb(layout: &ImageLayout, buf: &[u8], layer: usize) -> Option<RgbImage> {
+    let l = *layout.layers.get(layer)?;
+    if l.bands < 3 || buf.len() < l.data_offset + l.data_size() {
+        return None;
+    }
+    let d = &buf[l.data_offset..l.data_offset + l.data_size()];
+    let f = if l.bands == 6 { 2 } else { 1 };
+    let (w2, h2) = (l.width * f, l.height * f);
+    let mut data = vec![0u8; w2 * h2 * 3];
+    for y in 0..l.height {
+        let row = &d[y * l.row_stride()..(y + 1) * l.row_stride()];
+        for x in 0..l.width {
+            let band = |b: usize| row[b * l.width + x];
+            let (cr, cb) = (band(1), band(2));
+            let ys = if f == 2 { reconstruct(band(0), band(3), band(4), band(5)) } else { [band(0); 4] };
+            for (i, yv) in ys.iter().enumerate().take(f * f) {
+                let (px, py) = (x * f + i % 2, y * f + i / 2);
+                let o = (py * w2 + px) * 3;
+                data[o..o + 3].copy_from_slice(&ycrcb_to_rgb([*yv, cr, cb]));
+            }
+        }
+    }
+    Some(RgbImage { width: w2, height: h2, data })
+}
+
+/// The 2×2 double-resolution block (top-left, top-right, bottom-left, bottom-right)
+/// of one HPF pixel (robot-api 6.6).
+pub fn reconstruct(ll: u8, lh: u8, hl: u8, hh: u8) -> [u8; 4] {
+    let (ll, lh, hl, hh) = (ll as i32, lh as i32 - 128, hl as i32 - 128, hh as i32 - 128);
+    [ll - lh - hl + hh, ll - lh + hl - hh, ll + lh - hl - hh, ll + lh + hl + hh].map(clip)
+}
+
+// ---------------------------------------------------------------------------------
+// the camera
+
+/// Camera state of one robot: tables, field counter, image source, render buffers.
+#[derive(Clone, Debug)]
+pub struct Camera {
+    pub design: Design,
+    pub layout: ImageLayout,
+    pub lut: CdtLut,
+    /// Counter written into the next image's tag (starts at 1).
+    pub field_counter: u32,
+    pub source: Option<FileSource>,
+    /// The sensor-resolution RGB of the last image.
+    pub rgb: RgbImage,
+    /// CDT pixel counts of the last image.
+    pub last_counts: [u32; CDT_CHANNELS],
+}
+
+impl Camera {
+    pub fn new(design: Design) -> Camera {
+        let (w, h, _, _) = super::render::sensor_spec(design);
+        Camera {
+            design,
+            layout: ImageLayout::new(design),
+            lut: CdtLut::default(),
+            field_counter: 1,
+            source: None,
+            rgb: RgbImage { width: w, height: h, data: Vec::new() },
+            last_counts: [0; CDT_CHANNELS],
+        }
+    }
+
+    /// Fills `self.rgb` from the file source, or returns false (render the scene).
+    pub fn fill_from_source(&mut self) -> bool {
+        match &mut self.source {
+            Some(s) => {
+                s.next_frame(self.rgb.width, self.rgb.height, &mut self.rgb.data);
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// Builds the complete image vector from `self.rgb` into `out` (resized to the
+    /// layout's size) and advances the field counter.
+    pub fn build_vector(&mut self, primitive: PrimitiveId, frame: u32, out: &mut Vec<u8>) {
+        out.resize(self.layout.size(), 0);
+        self.layout.write_header(out, primitive, frame).expect("sized");
+        self.last_counts = synthesize(&self.layout, &self.rgb.data, &self.lut, self.field_counter, out);
+        self.field_counter = self.field_counter.wrapping_add(1);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn colour_conversion_round_trips() {
+        for rgb in [[0, 0, 0], [255, 255, 255], [250, 90, 160], [40, 150, 70], [128, 128, 128], [10, 200, 30]] {
+            let back = ycrcb_to_rgb(rgb_to_ycrcb(rgb));
+            for k in 0..3 {
+                assert!((back[k] as i32 - rgb[k] as i32).abs() <= 3, "{rgb:?} -> {back:?}");
+            }
+        }
+        assert_eq!(rgb_to_ycrcb([128, 128, 128]), [128, 128, 128]);
+        let pink = rgb_to_ycrcb([250, 90, 160]);
+        assert!(pink[1] > 150, "{pink:?}");
+        let green = rgb_to_ycrcb([40, 150, 70]);
+        assert!(green[1] < 110 && green[2] < 128, "{green:?}");
+    }
+
+    #[test]
+    fn hpf_round_trip() {
+        for (a, b, c, d) in [(0, 255, 255, 0), (10, 20, 30, 40), (200, 201, 199, 198), (255, 255, 255, 255)] {
+            let ll = div_round(a + b + c + d, 4);
+            let lh = clip(128 + div_round(c + d - a - b, 4));
+            let hl = clip(128 + div_round(b + d - a - c, 4));
+            let hh = clip(128 + div_round(a + d - b - c, 4));
+            let r = reconstruct(clip(ll), lh, hl, hh);
+            for (got, want) in r.iter().zip([a, b, c, d]) {
+                assert!((*got as i32 - want).abs() <= 2, "{r:?} vs {:?}", (a, b, c, d));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+#[path = "camera_tests.rs"]
+mod end_to_end;

@@ -1,0 +1,442 @@
+//! End-to-end tests of the camera: rendering, layers, CDT, replacement images.
+
+use std::time::Instant;
+
+use crate::robot::camera::*;
+use crate::robot::image::{band, color_frequency, field_counter, ImageLayout};
+use crate::robot::model::{POSTURE_PARTS, POSTURE_STAND};
+use crate::robot::render::{Ball, PinholeCamera};
+use crate::robot::vectors::rd_u32;
+use crate::robot::*;
+
+fn standing() -> VirtualRobot {
+    let mut r = VirtualRobot::new(Design::Ers7);
+    r.body_mut().set_posture_deg(&POSTURE_PARTS, &POSTURE_STAND);
+    r
+}
+
+/// (Y, Cr, Cb) of layer `layer` at band pixel (x, y).
+fn ycc(l: &ImageLayout, b: &[u8], layer: usize, x: usize, y: usize) -> [u8; 3] {
+    [band::Y, band::CR, band::CB].map(|k| b[l.pixel_offset(layer, k, x, y).unwrap()])
+}
+
+fn ball_centre_px(cam: &PinholeCamera, ball: &Ball) -> (f64, f64) {
+    cam.project([ball.x_mm, ball.y_mm, ball.radius_mm]).expect("ball ahead")
+}
+
+fn is_pink(c: [u8; 3]) -> bool {
+    c[1] > 150 && c[2] > 128
+}
+fn is_green(c: [u8; 3]) -> bool {
+    c[1] < 115 && c[2] < 128
+}
+
+#[test]
+fn image_vector_header_and_layers() {
+    let mut r = standing();
+    let mut out = Vec::new();
+    r.render_image(1234, &mut out);
+    let l = r.image_layout();
+    assert_eq!(out.len(), l.size());
+    assert_eq!(out.len(), 320 + 199_680 + 49_920 + 12_480 + 8_320);
+    assert_eq!(rd_u32(&out, 16).unwrap(), 1027);
+    assert_eq!(rd_u32(&out, 32).unwrap(), 4);
+    let cam = r.primitive_of(Part::Camera).unwrap();
+    let expect = [(24, 208, 160, 320, 199_680), (24, 104, 80, 320 + 199_680, 49_920), (24, 52, 40, 320 + 249_600, 12_480), (20, 104, 80, 320 + 262_080, 8_320)];
+    for (i, (ty, w, h, off, size)) in expect.into_iter().enumerate() {
+        let o = 192 + 32 * i;
+        let f = |k: usize| rd_u32(&out, o + 4 * k).unwrap();
+        assert_eq!([f(0), f(1), f(2), f(3), f(4), f(5), f(6)], [ty, cam, 1234, off, size, w, h], "layer {i}");
+    }
+}
+
+#[test]
+fn ball_appears_where_geometry_says() {
+    let mut r = standing();
+    let mut out = Vec::new();
+    r.render_image(1, &mut out);
+    let l = r.image_layout();
+    let ball = r.scene().camera.ball.unwrap();
+    let cam = r.camera_model();
+    let (u, v) = ball_centre_px(&cam, &ball);
+    assert!((0.0..416.0).contains(&u) && (0.0..320.0).contains(&v), "default ball visible standing: {u} {v}");
+    // the rendered RGB and every colour layer agree
+    let rgb = r.camera_rgb();
+    let px = rgb.pixel(u as usize, v as usize);
+    assert!(is_pink(rgb_to_ycrcb(px)), "{px:?}");
+    for (layer, f) in [(0, 2.0), (1, 4.0), (2, 8.0)] {
+        let c = ycc(&l, &out, layer, (u / f) as usize, (v / f) as usize);
+        assert!(is_pink(c), "layer {layer}: {c:?}");
+    }
+    // floor: below the ball (nearer, between ball and robot) and to its sides
+    let radius_px = ball.radius_mm / ((ball.x_mm - cam.pose.position[0]) * cam.su);
+    for (du, dv) in [(0.0, 2.0), (-3.0, 0.0), (3.0, 0.0)] {
+        let (x, y) = (u + du * radius_px, v + dv * radius_px);
+        let c = ycc(&l, &out, 0, (x / 2.0) as usize, (y / 2.0) as usize);
+        assert!(is_green(c), "floor at ({x}, {y}): {c:?}");
+    }
+    // the pink region's centroid is at the projected centre (within 2 H pixels)
+    let (mut sx, mut sy, mut n) = (0.0, 0.0, 0.0);
+    for y in 0..159 {
+        for x in 0..208 {
+            if is_pink(ycc(&l, &out, 0, x, y)) {
+                sx += x as f64 + 0.5;
+                sy += y as f64 + 0.5;
+                n += 1.0;
+            }
+        }
+    }
+    assert!(n > 20.0);
+    assert!((sx / n - u / 2.0).abs() < 2.0 && (sy / n - v / 2.0).abs() < 2.0, "{} {} vs {} {}", sx / n, sy / n, u / 2.0, v / 2.0);
+    // the radius in pixels matches the apparent size
+    let expected_area = std::f64::consts::PI * (radius_px / 2.0).powi(2);
+    assert!((n / expected_area - 1.0).abs() < 0.35, "{n} vs {expected_area}");
+}
+
+#[test]
+fn pan_left_moves_ball_right() {
+    let centroid = |pan: f64| {
+        let mut r = standing();
+        r.body_mut().set_posture_deg(&[Part::NeckPan], &[pan]);
+        r.render_image(1, &mut Vec::new());
+        let rgb = r.camera_rgb().clone();
+        let (mut sx, mut n) = (0.0, 0.0);
+        for y in 0..rgb.height {
+            for x in 0..rgb.width {
+                if is_pink(rgb_to_ycrcb(rgb.pixel(x, y))) {
+                    sx += x as f64;
+                    n += 1.0;
+                }
+            }
+        }
+        assert!(n > 0.0, "ball visible at pan {pan}");
+        let u = r.camera_model().project([1000.0, 0.0, 40.0]).unwrap().0;
+        assert!((sx / n - u).abs() < 3.0);
+        sx / n
+    };
+    let (c0, c10, cm10) = (centroid(0.0), centroid(10.0), centroid(-10.0));
+    assert!(c10 > c0 + 30.0, "{c0} {c10}");
+    assert!(cm10 < c0 - 30.0, "{c0} {cm10}");
+}
+
+#[test]
+fn hpf_bands_reconstruct_full_resolution_luminance() {
+    let mut r = standing();
+    // make the image busy: ball near, head slightly down
+    r.scene_mut().camera.ball = Some(Ball { x_mm: 600.0, y_mm: 30.0, ..Ball::default() });
+    r.body_mut().set_posture_deg(&[Part::NeckTilt2], &[0.0]);
+    let mut out = Vec::new();
+    r.render_image(1, &mut out);
+    let l = r.image_layout();
+    let rgb = r.camera_rgb().clone();
+    let mut max_err = 0;
+    let mut edges = 0;
+    for y in 0..159 {
+        for x in 0..208 {
+            let g = |k| out[l.pixel_offset(0, k, x, y).unwrap()];
+            let block = reconstruct(g(band::Y), g(band::Y_LH), g(band::Y_HL), g(band::Y_HH));
+            for (i, &yv) in block.iter().enumerate() {
+                let want = rgb_to_ycrcb(rgb.pixel(2 * x + i % 2, 2 * y + i / 2))[0] as i32;
+                max_err = max_err.max((yv as i32 - want).abs());
+            }
+            if g(band::Y_LH) != 128 || g(band::Y_HL) != 128 {
+                edges += 1;
+            }
+        }
+    }
+    assert!(max_err <= 2, "max error {max_err}");
+    assert!(edges > 50, "high-pass bands carry detail ({edges})");
+    // M reconstructs H's Y band, L reconstructs M's
+    for (lo, hi) in [(1, 0), (2, 1)] {
+        let ll = l.layers[lo];
+        for y in 0..ll.height - 1 {
+            for x in 0..ll.width {
+                let g = |k| out[l.pixel_offset(lo, k, x, y).unwrap()];
+                let block = reconstruct(g(band::Y), g(band::Y_LH), g(band::Y_HL), g(band::Y_HH));
+                for (i, &yv) in block.iter().enumerate() {
+                    let (hx, hy) = (2 * x + i % 2, 2 * y + i / 2);
+                    if hy == l.layers[hi].height - 1 && hx < 16 {
+                        continue; // tag bytes
+                    }
+                    let want = out[l.pixel_offset(hi, band::Y, hx, hy).unwrap()] as i32;
+                    assert!((yv as i32 - want).abs() <= 2, "layer {lo} ({x},{y})");
+                }
+            }
+        }
+    }
+    // the RGB helper returns an image of the double resolution resembling the render
+    let back = layer_to_rgb(&l, &out, 0).unwrap();
+    assert_eq!((back.width, back.height), (416, 320));
+    let (u, v) = r.camera_model().project([600.0, 30.0, 40.0]).unwrap();
+    let p = back.pixel(u as usize, v as usize);
+    let q = rgb.pixel(u as usize, v as usize);
+    for k in 0..3 {
+        assert!((p[k] as i32 - q[k] as i32).abs() <= 12, "{p:?} vs {q:?}");
+    }
+    assert!(layer_to_rgb(&l, &out, 3).is_none());
+}
+
+fn pink_table() -> [u32; 32] {
+    [cdt_entry(255, 150, 255, 129); 32]
+}
+
+#[test]
+fn cdt_bits_and_color_frequency_agree() {
+    let mut r = standing();
+    r.scene_mut().camera.ball = Some(Ball { x_mm: 600.0, ..Ball::default() });
+    r.body_mut().set_posture_deg(&[Part::NeckTilt2], &[0.0]);
+    let cam = r.primitive_of(Part::Camera).unwrap();
+    let green = [cdt_entry(110, 0, 127, 0); 32];
+    let v = build_cdt_vector(cam, &[(0x01, pink_table()), (0x20, green)]);
+    assert_eq!(r.set_cdt(&v), O_SUCCESS);
+    let mut out = Vec::new();
+    r.render_image(7, &mut out);
+    let l = r.image_layout();
+    let c = l.layers[3];
+    let mut counts = [0u32; 8];
+    for y in 0..c.height {
+        for x in 0..c.width {
+            if y == c.height - 1 && x < 16 {
+                continue;
+            }
+            let bits = out[l.pixel_offset(3, band::CDT, x, y).unwrap()];
+            for (k, n) in counts.iter_mut().enumerate() {
+                *n += (bits >> k) as u32 & 1;
+            }
+            // bits follow the rule on the M layer's pixel
+            let m = ycc(&l, &out, 1, x, y);
+            if !(y == c.height - 1 && x < 16) {
+                assert_eq!(bits, r.camera().lut.classify(m[0], m[1], m[2]));
+            }
+        }
+    }
+    assert!(counts[0] >= 160, "ball detected: {counts:?}");
+    assert!(counts[5] > 1000, "carpet detected: {counts:?}");
+    assert_eq!(counts[1] + counts[2] + counts[3] + counts[4] + counts[6] + counts[7], 0);
+    assert_eq!(counts, r.camera().last_counts);
+    // the ball's pixel carries bit 0
+    let (u, v) = r.camera_model().project([600.0, 0.0, 40.0]).unwrap();
+    assert_eq!(out[l.pixel_offset(3, band::CDT, (u / 4.0) as usize, (v / 4.0) as usize).unwrap()] & 1, 1);
+    // every band of every layer carries the same tag
+    for layer in l.layers.iter() {
+        for b in 0..layer.bands {
+            let at = layer.data_offset + (layer.height - 1) * layer.row_stride() + b * layer.width;
+            let tag = &out[at..at + 16];
+            assert_eq!(color_frequency(tag, 0x01) as u32, (counts[0] / 16).min(255));
+            assert_eq!(color_frequency(tag, 0x20) as u32, (counts[5] / 16).min(255));
+            assert_eq!(color_frequency(tag, 0x02), 0);
+            assert_eq!(field_counter(tag), Some(1));
+        }
+    }
+}
+
+#[test]
+fn field_counter_increments() {
+    let mut r = standing();
+    let mut out = Vec::new();
+    let l = r.image_layout();
+    let tag_at = |layer: usize| {
+        let x = l.layers[layer];
+        x.data_offset + (x.height - 1) * x.row_stride()
+    };
+    let mut prev = None;
+    for f in [4u32, 8, 12, 17] {
+        r.render_image(f, &mut out);
+        assert_eq!(rd_u32(&out, 192 + 8).unwrap(), f);
+        let fc = field_counter(&out[tag_at(0)..]).unwrap();
+        assert_eq!(field_counter(&out[tag_at(3)..]), Some(fc));
+        if let Some(p) = prev {
+            assert_eq!(fc, p + 1);
+        }
+        prev = Some(fc);
+    }
+}
+
+#[test]
+fn malformed_cdt_vectors_return_codes() {
+    let mut r = standing();
+    let cam = r.primitive_of(Part::Camera).unwrap();
+    let good = build_cdt_vector(cam, &[(0x01, pink_table())]);
+    assert_eq!(r.set_cdt(&good), O_SUCCESS);
+    assert_eq!(r.camera().lut.table(0), Some(&pink_table()));
+    // vector type
+    let mut b = good.clone();
+    b[16..20].copy_from_slice(&1027u32.to_le_bytes());
+    assert_eq!(r.set_cdt(&b), O_INVALID_DATA_TYPE);
+    // info type
+    let mut b = good.clone();
+    b[192..196].copy_from_slice(&20u32.to_le_bytes());
+    assert_eq!(r.set_cdt(&b), O_INVALID_DATA_TYPE);
+    // primitive
+    assert_eq!(r.set_cdt(&build_cdt_vector(cam + 1, &[(0x01, pink_table())])), O_INVALID_PRIMITIVE_ID);
+    assert_eq!(r.set_cdt(&build_cdt_vector(0xFFFF_FFFF, &[(0x01, pink_table())])), O_INVALID_PRIMITIVE_ID);
+    // channels: 0, two bits, channel 7 on ERS-7
+    for ch in [0, 0x03, 0x80, 0x100] {
+        assert_eq!(r.set_cdt(&build_cdt_vector(cam, &[(ch, pink_table())])), O_INVALID_ARG, "channel {ch:#x}");
+    }
+    // a bad info after a good one loads nothing
+    let mut r2 = standing();
+    assert_eq!(r2.set_cdt(&build_cdt_vector(cam, &[(0x02, pink_table()), (0x80, pink_table())])), O_INVALID_ARG);
+    assert!(r2.camera().lut.table(1).is_none());
+    // truncated, too many
+    assert_eq!(r.set_cdt(&good[..100]), O_FAIL);
+    assert_eq!(r.set_cdt(&good[..192 + 100]), O_FAIL);
+    let mut b = good.clone();
+    b[32..36].copy_from_slice(&9u32.to_le_bytes());
+    assert_eq!(r.set_cdt(&b), O_FAIL);
+    // numData 0 is fine; garbage never panics
+    assert_eq!(r.set_cdt(&build_cdt_vector(cam, &[])), O_SUCCESS);
+    let mut seed = 12345u32;
+    for len in [0, 1, 191, 192, 300, 1344, 4096] {
+        let mut b: Vec<u8> = (0..len)
+            .map(|_| {
+                seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12345);
+                (seed >> 16) as u8
+            })
+            .collect();
+        let _ = r.set_cdt(&b);
+        if len >= 192 {
+            b[16..20].copy_from_slice(&1028u32.to_le_bytes());
+            let _ = r.set_cdt(&b);
+        }
+    }
+    // ERS-210 accepts channel 7
+    let mut r210 = VirtualRobot::new(Design::Ers210);
+    let cam210 = r210.primitive_of(Part::Camera).unwrap();
+    assert_eq!(r210.set_cdt(&build_cdt_vector(cam210, &[(0x80, pink_table())])), O_SUCCESS);
+}
+
+fn ppm(w: usize, h: usize, f: impl Fn(usize, usize) -> [u8; 3]) -> Vec<u8> {
+    let mut b = format!("P6\n# test image\n{w} {h}\n255\n").into_bytes();
+    for y in 0..h {
+        for x in 0..w {
+            b.extend_from_slice(&f(x, y));
+        }
+    }
+    b
+}
+
+fn bmp24(w: usize, h: usize, f: impl Fn(usize, usize) -> [u8; 3]) -> Vec<u8> {
+    let stride = (w * 3).div_ceil(4) * 4;
+    let size = 54 + stride * h;
+    let mut b = vec![0u8; size];
+    b[0..2].copy_from_slice(b"BM");
+    b[2..6].copy_from_slice(&(size as u32).to_le_bytes());
+    b[10..14].copy_from_slice(&54u32.to_le_bytes());
+    b[14..18].copy_from_slice(&40u32.to_le_bytes());
+    b[18..22].copy_from_slice(&(w as i32).to_le_bytes());
+    b[22..26].copy_from_slice(&(h as i32).to_le_bytes());
+    b[26..28].copy_from_slice(&1u16.to_le_bytes());
+    b[28..30].copy_from_slice(&24u16.to_le_bytes());
+    for y in 0..h {
+        let row = 54 + (h - 1 - y) * stride; // bottom-up
+        for x in 0..w {
+            let [r, g, bl] = f(x, y);
+            b[row + 3 * x..row + 3 * x + 3].copy_from_slice(&[bl, g, r]);
+        }
+    }
+    b
+}
+
+const QUAD: [[u8; 3]; 4] = [[255, 0, 0], [0, 255, 0], [0, 0, 255], [250, 250, 250]];
+
+fn quad(x: usize, y: usize, w: usize, h: usize) -> [u8; 3] {
+    QUAD[(x * 2 / w) + 2 * (y * 2 / h)]
+}
+
+#[test]
+fn ppm_and_bmp_sources_load_and_convert() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("a.ppm");
+    std::fs::write(&p, ppm(10, 6, |x, y| quad(x, y, 10, 6))).unwrap();
+    let mut r = standing();
+    assert_eq!(r.set_image_source(Some(&p)).unwrap(), 1);
+    let mut out = Vec::new();
+    let l = r.image_layout();
+    for _ in 0..2 {
+        r.render_image(1, &mut out);
+        // quadrant centres in layer H (208 × 160)
+        for (i, (x, y)) in [(52, 40), (156, 40), (52, 120), (156, 120)].into_iter().enumerate() {
+            assert_eq!(ycc(&l, &out, 0, x, y), rgb_to_ycrcb(QUAD[i]), "quadrant {i}");
+            assert_eq!(ycc(&l, &out, 2, x / 4, y / 4), rgb_to_ycrcb(QUAD[i]), "L quadrant {i}");
+        }
+        assert_eq!(r.camera_rgb().pixel(0, 0), QUAD[0]);
+    }
+    // a directory: frames in name order (a BMP and a PPM), cycled
+    let frames = dir.path().join("frames");
+    std::fs::create_dir(&frames).unwrap();
+    std::fs::write(frames.join("002.bmp"), bmp24(7, 5, |x, y| quad(x, y, 7, 5))).unwrap();
+    std::fs::write(frames.join("001.ppm"), ppm(3, 3, |_, _| [10, 200, 30])).unwrap();
+    std::fs::write(frames.join("notes.txt"), b"ignored").unwrap();
+    assert_eq!(r.set_image_source(Some(&frames)).unwrap(), 2);
+    let mut firsts = Vec::new();
+    for _ in 0..4 {
+        r.render_image(1, &mut out);
+        firsts.push(r.camera_rgb().pixel(0, 0));
+        if r.camera_rgb().pixel(0, 0) == QUAD[0] {
+            // BMP orientation: bottom-up rows, BGR order
+            assert_eq!(r.camera_rgb().pixel(415, 0), QUAD[1]);
+            assert_eq!(r.camera_rgb().pixel(0, 319), QUAD[2]);
+            assert_eq!(r.camera_rgb().pixel(415, 319), QUAD[3]);
+        }
+    }
+    assert_eq!(firsts, vec![[10, 200, 30], QUAD[0], [10, 200, 30], QUAD[0]]);
+    // errors
+    let bad = dir.path().join("bad.ppm");
+    std::fs::write(&bad, b"P6\n10 10\n255\nshort").unwrap();
+    assert!(r.set_image_source(Some(&bad)).is_err());
+    assert!(r.set_image_source(Some(&dir.path().join("missing.bmp"))).is_err());
+    let empty = dir.path().join("empty");
+    std::fs::create_dir(&empty).unwrap();
+    assert!(r.set_image_source(Some(&empty)).is_err());
+    // back to the rendered scene
+    assert_eq!(r.set_image_source(None).unwrap(), 0);
+    r.render_image(1, &mut out);
+    assert_ne!(r.camera_rgb().pixel(0, 319), QUAD[2]);
+    // decoder details: 16-bit PPM, top-down 32-bit BMP
+    let mut p16 = b"P6 1 1 65535 ".to_vec();
+    p16.extend_from_slice(&[0xFF, 0xFF, 0x80, 0x00, 0x00, 0x00]);
+    assert_eq!(decode_ppm(&p16).unwrap().data, vec![255, 128, 0]);
+    let mut b32 = bmp24(1, 1, |_, _| [0, 0, 0]);
+    b32[22..26].copy_from_slice(&(-1i32).to_le_bytes());
+    b32[28..30].copy_from_slice(&32u16.to_le_bytes());
+    b32.truncate(54);
+    b32.extend_from_slice(&[1, 2, 3, 4]);
+    assert_eq!(decode_bmp(&b32).unwrap().data, vec![3, 2, 1]);
+    assert!(decode_bmp(b"BM").is_err());
+}
+
+#[test]
+fn ers210_renders_its_own_layout() {
+    let mut r = VirtualRobot::new(Design::Ers210);
+    let mut out = Vec::new();
+    r.render_image(3, &mut out);
+    assert_eq!(out.len(), r.image_layout().size());
+    assert_eq!((r.camera_rgb().width, r.camera_rgb().height), (352, 288));
+}
+
+/// Prints the time of a full image (render + all layers); asserts only correctness.
+#[test]
+fn render_time() {
+    let mut r = standing();
+    let mut out = Vec::new();
+    r.render_image(0, &mut out);
+    let n = 30;
+    let t = Instant::now();
+    for f in 0..n {
+        r.body_mut().set_posture_deg(&[Part::NeckPan], &[f as f64]);
+        r.render_image(f, &mut out);
+    }
+    let per = t.elapsed() / n;
+    let rgb = r.camera_rgb().clone();
+    let t = Instant::now();
+    let mut lut = CdtLut::default();
+    lut.load(&CdtTable { channel: 0, entries: pink_table() });
+    for f in 0..n {
+        synthesize(&r.image_layout(), &rgb.data, &lut, f, &mut out);
+    }
+    let synth = t.elapsed() / n;
+    println!("camera: full image {per:?} per frame (layer synthesis alone {synth:?})");
+    assert_eq!(out.len(), r.image_layout().size());
+}
+
