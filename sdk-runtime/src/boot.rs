@@ -37,6 +37,10 @@ pub struct RunOptions {
     pub trace: Option<PathBuf>,
     /// How fast virtual time runs.
     pub speed: crate::clock::Speed,
+    /// Append what the speaker plays to this WAV file.
+    pub speaker_wav: Option<PathBuf>,
+    /// Feed the microphones from this WAV file (silence when absent or finished).
+    pub mic_wav: Option<PathBuf>,
     /// Unix socket for pause / step / resume / speed commands.
     pub control: Option<PathBuf>,
 }
@@ -76,6 +80,10 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
     let robot = crate::robot::VirtualRobot::from_design_name(&opts.design).ok_or_else(|| {
         ErrorKind::Runtime(format!("unknown robot design `{}` (known: ERS-7, ERS-210, ERS-220)", opts.design))
     })?;
+    let mic_pcm = match &opts.mic_wav {
+        Some(p) => crate::audio::read_wav_as_mic(p)?,
+        None => Vec::new(),
+    };
     let trace = match &opts.trace {
         Some(p) => Some(std::fs::File::create(p).map_err(|e| Error::io(p, e))?),
         None => None,
@@ -103,7 +111,7 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
         shutdown_requested: AtomicBool::new(false),
         booting: AtomicBool::new(true),
         timers: Timers::new(),
-        vr: crate::vr::VrService::new(robot, trace),
+        vr: crate::vr::VrService::new(robot, trace, crate::audio::Speaker::new(opts.speaker_wav.clone()), crate::audio::Mic::new(mic_pcm)),
         vectors: Mutex::new(Vec::new()),
     });
 

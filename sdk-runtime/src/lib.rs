@@ -12,6 +12,7 @@
 //! assert!(!is_eight_dot_three("LONGNAME.TEXT"));
 //! ```
 
+pub mod audio;
 pub mod boot;
 pub mod cfg;
 pub mod clock;

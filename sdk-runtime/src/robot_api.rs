@@ -259,7 +259,23 @@ pub extern "C" fn vr_attach(service: i32, selector: u32) -> u32 {
 
 pub unsafe extern "C" fn vr_submit(service: i32, oid: *mut c_void, selector: u32, base: *mut c_void, size: usize, token: *mut u64) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
-    if service as usize != crate::vr::SERVICE_EFFECTOR || base.is_null() || token.is_null() {
+    if base.is_null() || token.is_null() {
+        return O_INVALID_ARG;
+    }
+    if service as usize == crate::vr::SERVICE_SPEAKER {
+        return match rt.vr.submit_sound(base as usize, size) {
+            Ok(t) => {
+                // SAFETY: out-param.
+                unsafe { *token = t };
+                O_SUCCESS
+            }
+            Err(e) => {
+                rt.diag.warn(&format!("speaker: sound vector refused: {e}"));
+                O_INVALID_ARG
+            }
+        };
+    }
+    if service as usize != crate::vr::SERVICE_EFFECTOR {
         return O_NOT_SUPPORTED;
     }
     match rt.vr.submit((oid as usize, selector), base as usize, size) {

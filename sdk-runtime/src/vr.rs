@@ -57,12 +57,25 @@ pub struct VrService {
     pub robot: Mutex<VirtualRobot>,
     wiring: Mutex<Wiring>,
     trace: Option<Mutex<BufWriter<File>>>,
+    speaker: Mutex<crate::audio::Speaker>,
+    mic: Mutex<crate::audio::Mic>,
 }
 
 impl VrService {
-    pub fn new(mut robot: VirtualRobot, trace: Option<File>) -> VrService {
+    pub fn new(mut robot: VirtualRobot, trace: Option<File>, speaker: crate::audio::Speaker, mic: crate::audio::Mic) -> VrService {
         robot.set_trace(trace.is_some());
-        VrService { robot: Mutex::new(robot), wiring: Mutex::new(Wiring::default()), trace: trace.map(|f| Mutex::new(BufWriter::new(f))) }
+        VrService {
+            robot: Mutex::new(robot),
+            wiring: Mutex::new(Wiring::default()),
+            trace: trace.map(|f| Mutex::new(BufWriter::new(f))),
+            speaker: Mutex::new(speaker),
+            mic: Mutex::new(mic),
+        }
+    }
+
+    /// A sound vector received by the speaker.
+    pub fn submit_sound(&self, base: usize, size: usize) -> Result<u64, String> {
+        self.speaker.lock().unwrap_or_else(|p| p.into_inner()).submit(base, size)
     }
 
     pub fn robot(&self) -> std::sync::MutexGuard<'_, VirtualRobot> {
@@ -117,6 +130,21 @@ impl VrService {
         }
         if let Some(vector) = out.sensor_vector {
             self.publish(rt, SERVICE_SENSOR, vector);
+        }
+        let amplifier = self.robot().motor_power();
+        let played = self.speaker.lock().unwrap_or_else(|p| p.into_inner()).step(out.frame, amplifier, |m| rt.diag.warn(m));
+        if let Some((oid, sel)) = self.wiring().providers[SERVICE_SPEAKER] {
+            for token in played.done {
+                let ev = VrEvent { kind: EVENT_DONE, service: SERVICE_SPEAKER as u32, token, mem_id: 0, size: 0 };
+                let _ = rt.send(oid, sel, ev.bytes());
+            }
+        }
+        if out.mic_due && self.wiring().providers[SERVICE_MIC].is_some() {
+            let block = self.mic.lock().unwrap_or_else(|p| p.into_inner()).next_block();
+            let mic_id = self.robot().open_primitive("PRM:/r1/c1/c2/c3/m1-Mic:M1").unwrap_or(0);
+            if let Ok(v) = vectors::build_mic_vector(mic_id, out.frame, &block) {
+                self.publish(rt, SERVICE_MIC, v);
+            }
         }
         if let Some(t) = &self.trace {
             let mut w = t.lock().unwrap_or_else(|p| p.into_inner());

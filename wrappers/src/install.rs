@@ -250,7 +250,7 @@ fn build_archives(root: &Path, include: &Path, src: &Path) -> Result<(), Error> 
 
 /// System objects the runtime loads before a stick's own objects (robot-api 8.1):
 /// `(directory under cxx/system, file under OPEN_R/SYSTEM/OBJS)`.
-pub const SYSTEM_OBJECTS: &[(&str, &str)] = &[("VirtualRobotComm", "VRCOMM.BIN")];
+pub const SYSTEM_OBJECTS: &[(&str, &str)] = &[("VirtualRobotComm", "VRCOMM.BIN"), ("VirtualRobotAudioComm", "VRAUCOMM.BIN")];
 
 /// Builds each system object like a user object: stubgen2, the compiler, mkbin.
 fn build_system_objects(root: &Path, include: &Path, src: &Path) -> Result<(), Error> {

@@ -30,6 +30,12 @@ pub struct Args {
     /// Serve pause / resume / step / speed / status commands on this Unix socket
     #[arg(long, value_name = "PATH")]
     control: Option<PathBuf>,
+    /// Write what the speaker plays to this WAV file
+    #[arg(long, value_name = "FILE")]
+    speaker_wav: Option<PathBuf>,
+    /// Feed the microphones from this WAV file (default: silence)
+    #[arg(long, value_name = "FILE")]
+    mic_wav: Option<PathBuf>,
     /// Write the virtual robot's trace (JSON lines: commands, sensor frames, LEDs) to FILE
     #[arg(long, value_name = "FILE")]
     trace: Option<PathBuf>,
@@ -88,6 +94,8 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         system_objects: install::system_objects(&root),
         trace: args.trace.clone(),
         speed: args.speed,
+        speaker_wav: args.speaker_wav.clone(),
+        mic_wav: args.mic_wav.clone(),
         control: args.control.clone(),
         ms_dir: args.ms_dir.clone(),
         design: args.design,

@@ -2,7 +2,7 @@
 #include <OPENR/OSyslog.h>
 #include <OPENR/core_macro.h>
 
-#include "openr_host.h"
+#include "system/common/VRShared.h"
 #include "VirtualRobotComm.h"
 
 OStatus
@@ -45,21 +45,7 @@ VirtualRobotComm::DoDestroy(const OSystemEvent& event)
 void
 VirtualRobotComm::NotifyEffector(const ONotifyEvent& event)
 {
-    const openr_host_api* api = openr_host();
-    SubjectID sender = event.SenderID().GetSubjectID();
-    for (int i = 0; i < event.NumOfData(); i++) {
-        RCRegion* r = event.RCData(i);
-        if (r == 0) continue;
-        unsigned long long token = 0;
-        unsigned int st = api->vr_submit(OPENR_VR_EFFECTOR, sender.GetOID().GetAddress(),
-                                         sender.GetSelector(), r->Base(), r->Size(), &token);
-        if (st == oSUCCESS) {
-            playing_[token] = r;
-        } else {
-            // A malformed vector is not played: give it back at once.
-            observer[obsEffector]->AssertReadyFor(r);
-        }
-    }
+    vrSubmit(observer[obsEffector], event, OPENR_VR_EFFECTOR, &playing_);
 }
 
 void
@@ -67,26 +53,8 @@ VirtualRobotComm::Event(void* msg)
 {
     const openr_vr_event* ev = static_cast<const openr_vr_event*>(msg);
     if (ev->kind == OPENR_VR_DONE) {
-        std::map<unsigned long long, RCRegion*>::iterator it = playing_.find(ev->token);
-        if (it == playing_.end()) return;
-        // Release first, then ASSERT-READY: the sender reuses a region as soon as its
-        // count is back to 1 (robot-api 8.2.3).
-        observer[obsEffector]->AssertReadyFor(it->second);
-        playing_.erase(it);
+        vrDone(observer[obsEffector], ev->token, &playing_);
     } else if (ev->kind == OPENR_VR_DATA) {
-        Publish(ev->service == OPENR_VR_IMAGE ? sbjFbkImageSensor : sbjSensor, ev->mem_id, ev->size);
+        vrPublish(subject[ev->service == OPENR_VR_IMAGE ? sbjFbkImageSensor : sbjSensor], ev->mem_id, ev->size);
     }
-}
-
-void
-VirtualRobotComm::Publish(int sbj, unsigned int memID, unsigned int size)
-{
-    const openr_host_api* api = openr_host();
-    void* base = api->shm_base(memID, 0);
-    if (base == 0) return;
-    RCRegion* r = new RCRegion(memID, 0, base, size);   // takes its own reference
-    api->shm_unref(memID);                               // the event's one
-    subject[sbj]->SetData(r);
-    subject[sbj]->NotifyObservers();
-    r->RemoveReference();   // observers' queues keep what they still need
 }

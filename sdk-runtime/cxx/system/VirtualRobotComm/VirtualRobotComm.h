@@ -30,8 +30,6 @@ public:
     void Event(void* msg);
 
 private:
-    void Publish(int sbj, unsigned int memID, unsigned int size);
-
     // vr_submit token -> the received region it stands for.
     std::map<unsigned long long, RCRegion*> playing_;
 };
