@@ -566,6 +566,80 @@ pub fn reconstruct(ll: u8, lh: u8, hl: u8, hh: u8) -> [u8; 4] {
 }
 
 // ---------------------------------------------------------------------------------
+// camera parameters (robot-api 5.3, 5.4, 10)
+
+pub const CAM_SET_WHITE_BALANCE: u32 = 384;
+pub const CAM_SET_GAIN: u32 = 385;
+pub const CAM_SET_SHUTTER_SPEED: u32 = 386;
+
+/// `ocamparam*` settings (1 = INDOOR/LOW/SLOW, 2 = OUTDOOR/MID/MID, 3 = FL/HIGH/FAST).
+/// Effects on the sensed image (robot-api 5.4, an inference): gain LOW/HIGH ×0.5/×2,
+/// shutter SLOW/FAST ×2/×0.5 on every channel; the scene is lit like the default
+/// white balance (FL, 5000 K), so INDOOR (2856 K) tints it blue (R ×0.8, B ×1.25)
+/// and OUTDOOR (6500 K) warm (R ×1.1, B ×0.9).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CameraSettings {
+    pub white_balance: u32,
+    pub gain: u32,
+    pub shutter: u32,
+}
+
+impl Default for CameraSettings {
+    fn default() -> CameraSettings {
+        CameraSettings { white_balance: 3, gain: 2, shutter: 2 }
+    }
+}
+
+impl CameraSettings {
+    /// Applies `request` (`oprmreqCAM_SET_*`) with `camparam`: oSUCCESS, oINVALID_ARG
+    /// for a value outside 1..3, oNOT_SUPPORTED for other requests.
+    pub fn control(&mut self, request: u32, camparam: u32) -> OStatus {
+        let slot = match request {
+            CAM_SET_WHITE_BALANCE => &mut self.white_balance,
+            CAM_SET_GAIN => &mut self.gain,
+            CAM_SET_SHUTTER_SPEED => &mut self.shutter,
+            _ => return O_NOT_SUPPORTED,
+        };
+        if !(1..=3).contains(&camparam) {
+            return O_INVALID_ARG;
+        }
+        *slot = camparam;
+        O_SUCCESS
+    }
+
+    /// Per-channel multipliers (R, G, B).
+    pub fn factors(&self) -> [f64; 3] {
+        let k = [0.5, 1.0, 2.0][self.gain.clamp(1, 3) as usize - 1] * [2.0, 1.0, 0.5][self.shutter.clamp(1, 3) as usize - 1];
+        let tint = match self.white_balance {
+            1 => [0.8, 1.0, 1.25],
+            2 => [1.1, 1.0, 0.9],
+            _ => [1.0, 1.0, 1.0],
+        };
+        tint.map(|t| t * k)
+    }
+
+    /// Applies the multipliers to an RGB buffer in place (nothing to do by default).
+    pub fn apply(&self, rgb: &mut [u8]) {
+        let f = self.factors();
+        if f == [1.0; 3] {
+            return;
+        }
+        let luts = f.map(|k| {
+            let mut t = [0u8; 256];
+            for (i, v) in t.iter_mut().enumerate() {
+                *v = (i as f64 * k).round().clamp(0.0, 255.0) as u8;
+            }
+            t
+        });
+        for px in rgb.chunks_exact_mut(3) {
+            for (c, lut) in px.iter_mut().zip(&luts) {
+                *c = lut[*c as usize];
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------
 // the camera
 
 /// Camera state of one robot: tables, field counter, image source, render buffers.
@@ -581,6 +655,7 @@ pub struct Camera {
     pub rgb: RgbImage,
     /// CDT pixel counts of the last image.
     pub last_counts: [u32; CDT_CHANNELS],
+    pub settings: CameraSettings,
 }
 
 impl Camera {
@@ -594,6 +669,7 @@ impl Camera {
             source: None,
             rgb: RgbImage { width: w, height: h, data: Vec::new() },
             last_counts: [0; CDT_CHANNELS],
+            settings: CameraSettings::default(),
         }
     }
 
@@ -610,7 +686,9 @@ impl Camera {
 
     /// Builds the complete image vector from `self.rgb` into `out` (resized to the
     /// layout's size) and advances the field counter.
+    /// The camera settings are applied to `self.rgb` first.
     pub fn build_vector(&mut self, primitive: PrimitiveId, frame: u32, out: &mut Vec<u8>) {
+        self.settings.apply(&mut self.rgb.data);
         out.resize(self.layout.size(), 0);
         self.layout.write_header(out, primitive, frame).expect("sized");
         self.last_counts = synthesize(&self.layout, &self.rgb.data, &self.lut, self.field_counter, out);

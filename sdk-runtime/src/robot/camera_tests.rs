@@ -440,3 +440,36 @@ fn render_time() {
     assert_eq!(out.len(), r.image_layout().size());
 }
 
+
+#[test]
+fn camera_parameters_change_the_image() {
+    let mean_y = |r: &mut VirtualRobot| {
+        let mut out = Vec::new();
+        r.render_image(1, &mut out);
+        let l = r.image_layout();
+        let mut s = 0u64;
+        for y in 0..159 {
+            for x in 0..208 {
+                s += out[l.pixel_offset(0, band::Y, x, y).unwrap()] as u64;
+            }
+        }
+        (s / (208 * 159)) as i64
+    };
+    let mut r = standing();
+    let cam = r.primitive_of(Part::Camera).unwrap();
+    let base = mean_y(&mut r);
+    assert_eq!(r.camera_control(cam, CAM_SET_GAIN, 1), O_SUCCESS);
+    let dark = mean_y(&mut r);
+    assert!((dark - base / 2).abs() <= 2, "{base} {dark}");
+    assert_eq!(r.camera_control(cam, CAM_SET_GAIN, 2), O_SUCCESS);
+    assert_eq!(r.camera_control(cam, CAM_SET_SHUTTER_SPEED, 1), O_SUCCESS);
+    assert!(mean_y(&mut r) > base + 20);
+    assert_eq!(r.camera_control(cam, CAM_SET_SHUTTER_SPEED, 2), O_SUCCESS);
+    assert_eq!(mean_y(&mut r), base);
+    assert_eq!(r.camera_control(cam, CAM_SET_WHITE_BALANCE, 0), O_INVALID_ARG);
+    assert_eq!(r.camera_control(cam, CAM_SET_GAIN, 4), O_INVALID_ARG);
+    assert_eq!(r.camera_control(cam, 387, 1), O_NOT_SUPPORTED);
+    let pan = r.primitive_of(Part::NeckPan).unwrap();
+    assert_eq!(r.camera_control(pan, CAM_SET_GAIN, 1), O_INVALID_ARG);
+    assert_eq!(r.camera_control(0xDEAD, CAM_SET_GAIN, 1), O_INVALID_PRIMITIVE_ID);
+}

@@ -451,6 +451,19 @@ impl VirtualRobot {
         Ok(self.camera.source.as_ref().map_or(0, |s| s.paths.len()))
     }
 
+    /// `ControlPrimitive` on the camera: `oprmreqCAM_SET_WHITE_BALANCE` (384),
+    /// `_SET_GAIN` (385), `_SET_SHUTTER_SPEED` (386) with an `ocamparam*` value 1..3
+    /// (effects: [`camera::CameraSettings`]). oINVALID_PRIMITIVE_ID for an unknown ID,
+    /// oINVALID_ARG for another primitive or a bad value, oNOT_SUPPORTED for other
+    /// camera requests.
+    pub fn camera_control(&mut self, id: PrimitiveId, request: u32, camparam: u32) -> OStatus {
+        match self.model.primitive(id) {
+            None => O_INVALID_PRIMITIVE_ID,
+            Some(p) if p.part != Part::Camera => O_INVALID_ARG,
+            Some(_) => self.camera.settings.control(request, camparam),
+        }
+    }
+
     /// The camera pinhole model at the current joint angles and posture.
     pub fn camera_model(&self) -> render::PinholeCamera {
         render::PinholeCamera::new(self.design(), render::camera_pose(&self.body, &self.scene))

@@ -24,7 +24,7 @@
 //! left; the horizontal and vertical fields of view of ers7-model 9.1 (ERS-2xx 13.1)
 //! span the full image. No lens distortion, vignetting, noise or motion blur.
 //!
-//! Shading: flat colours; the ball is Lambert-lit from above (55 % ambient) and casts a
+//! Shading: flat colours; the ball is Lambert-lit from above (70 % ambient) and casts a
 //! soft contact shadow; walls are slightly darker than the line colour; whatever is
 //! beyond the field (or above its walls) is a dark grey room. The scene's PSD wall
 //! (`Scene::wall_mm`, a plane across the robot's heading that many mm ahead of the
@@ -261,7 +261,7 @@ impl PinholeCamera {
                         if t > 0.0 && psd_wall_x.is_none_or(|x| d[0] <= 0.0 || t < (x - c[0]) / d[0]) {
                             let p = add(c, scale(d, t));
                             let n = scale(sub(p, centre), 1.0 / b.radius_mm);
-                            colour = Some(shade(b.rgb, 0.55 + 0.45 * dot(n, light).max(0.0)));
+                            colour = Some(shade(b.rgb, 0.7 + 0.3 * dot(n, light).max(0.0)));
                         }
                     }
                 }

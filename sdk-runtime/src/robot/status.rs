@@ -5,6 +5,7 @@ pub type OStatus = u32;
 
 pub const O_SUCCESS: OStatus = 0;
 pub const O_FAIL: OStatus = 2;
+pub const O_NOT_SUPPORTED: OStatus = 3;
 pub const O_INVALID_ARG: OStatus = 4;
 pub const O_NOT_FOUND: OStatus = 6;
 pub const O_INVALID_PRIMITIVE_ID: OStatus = 4096;
