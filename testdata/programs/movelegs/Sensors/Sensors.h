@@ -19,8 +19,8 @@ static const char* const WATCHED_JOINT_LOCATOR[NUM_WATCHED_JOINTS] = {
     "PRM:/r2/c1/c2/c3-Joint2:23"
 };
 
-const int PRINT_EVERY = 32;     // sensor vectors arrive every 32 ms: ~1 s
-const int MAX_PRINTS  = 8;
+const int PRINT_EVERY = 8;      // sensor vectors arrive every 32 ms: 256 ms
+const int MAX_PRINTS  = 24;
 
 class Sensors : public OObject {
 public:
