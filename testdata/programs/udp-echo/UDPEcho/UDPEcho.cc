@@ -79,11 +79,17 @@ OStatus
 UDPEcho::CreateBuffers()
 {
     // Payload must live in memory shared with the IPStack.
+    //
+    // Call() returns the transport status; the result of the request
+    // itself is in the message's error field (only valid if the call
+    // went through).
+    //
     antEnvCreateSharedBufferMsg sendBufferMsg(UDPECHO_BUFFER_SIZE);
-    sendBufferMsg.Call(ipstackRef, sizeof(sendBufferMsg));
-    if (sendBufferMsg.error != ANT_SUCCESS) {
+    antError result = sendBufferMsg.Call(ipstackRef, sizeof(sendBufferMsg));
+    if (result == ANT_SUCCESS) result = sendBufferMsg.error;
+    if (result != ANT_SUCCESS) {
         OSYSLOG1((osyslogERROR, "UDPEcho : can't allocate the send buffer (%d)",
-                  sendBufferMsg.error));
+                  result));
         return oFAIL;
     }
     sendBuffer = sendBufferMsg.buffer;
@@ -91,10 +97,11 @@ UDPEcho::CreateBuffers()
     sendData = (byte*)sendBuffer.GetAddress();
 
     antEnvCreateSharedBufferMsg recvBufferMsg(UDPECHO_BUFFER_SIZE);
-    recvBufferMsg.Call(ipstackRef, sizeof(recvBufferMsg));
-    if (recvBufferMsg.error != ANT_SUCCESS) {
+    result = recvBufferMsg.Call(ipstackRef, sizeof(recvBufferMsg));
+    if (result == ANT_SUCCESS) result = recvBufferMsg.error;
+    if (result != ANT_SUCCESS) {
         OSYSLOG1((osyslogERROR, "UDPEcho : can't allocate the receive buffer (%d)",
-                  recvBufferMsg.error));
+                  result));
         return oFAIL;
     }
     recvBuffer = recvBufferMsg.buffer;
@@ -108,17 +115,18 @@ OStatus
 UDPEcho::Open()
 {
     antEnvCreateEndpointMsg udpCreateMsg(EndpointType_UDP, UDPECHO_BUFFER_SIZE * 2);
-    udpCreateMsg.Call(ipstackRef, sizeof(udpCreateMsg));
-    if (udpCreateMsg.error != ANT_SUCCESS) {
+    antError result = udpCreateMsg.Call(ipstackRef, sizeof(udpCreateMsg));
+    if (result == ANT_SUCCESS) result = udpCreateMsg.error;
+    if (result != ANT_SUCCESS) {
         OSYSLOG1((osyslogERROR, "UDPEcho : can't create an endpoint (%d)",
-                  udpCreateMsg.error));
+                  result));
         return oFAIL;
     }
     endpoint = udpCreateMsg.moduleRef;
 
     UDPEndpointBindMsg bindMsg(endpoint, IP_ADDR_ANY, UDPECHO_PORT);
-    bindMsg.Call(ipstackRef, sizeof(bindMsg));
-    if (bindMsg.error != UDP_SUCCESS) {
+    if (bindMsg.Call(ipstackRef, sizeof(bindMsg)) != ANT_SUCCESS ||
+        bindMsg.error != UDP_SUCCESS) {
         OSYSLOG1((osyslogERROR, "UDPEcho : bind to port %d failed (%d)",
                   UDPECHO_PORT, bindMsg.error));
         return oFAIL;
