@@ -41,6 +41,8 @@ pub struct RunOptions {
     pub speaker_wav: Option<PathBuf>,
     /// Feed the microphones from this WAV file (silence when absent or finished).
     pub mic_wav: Option<PathBuf>,
+    /// Camera frames from an image file or a directory of frames instead of the scene.
+    pub images: Option<PathBuf>,
     /// Unix socket for pause / step / resume / speed commands.
     pub control: Option<PathBuf>,
 }
@@ -84,6 +86,10 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
         Some(p) => crate::audio::read_wav_as_mic(p)?,
         None => Vec::new(),
     };
+    let mut robot = robot;
+    if let Some(p) = &opts.images {
+        robot.set_image_source(Some(p)).map_err(|e| Error::config(p, None, format!("cannot use as camera images: {e}")))?;
+    }
     let trace = match &opts.trace {
         Some(p) => Some(std::fs::File::create(p).map_err(|e| Error::io(p, e))?),
         None => None,
@@ -138,6 +144,9 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
         .map_err(|e| ErrorKind::Runtime(format!("cannot start the robot thread: {e}")))?;
     for slot in &all {
         hook(rt, slot, SEL_INIT, OREASON_BOOT, None)?;
+    }
+    if connections.iter().any(|c| c.subject == crate::vr::CAMERA_SERVICE) {
+        rt.vr.want_camera();
     }
     connect_all(rt, &connect_path, &connections, opts.lenient_connect)?;
 

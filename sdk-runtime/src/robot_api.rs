@@ -37,10 +37,25 @@ pub extern "C" fn close_primitive(id: u32) -> u32 {
     with_robot(|r| r.close_primitive(id)).unwrap_or(O_FAIL)
 }
 
-/// Device requests (robot-api 5): accepted for any open primitive; the virtual devices
-/// have no settings that change what the runtime simulates yet.
-pub unsafe extern "C" fn control_primitive(id: u32, _req: u32, _p: *const c_void, _ps: usize, _r: *mut c_void, _rs: usize) -> u32 {
-    with_robot(|r| if r.model().primitive(id).is_some() { O_SUCCESS } else { O_INVALID_PRIMITIVE_ID }).unwrap_or(O_FAIL)
+/// Device requests (robot-api 5). The camera's white balance, gain and shutter change
+/// the rendered image; the speaker and mic requests are accepted (the emulated
+/// amplifier has no volume or mute of its own).
+pub unsafe extern "C" fn control_primitive(id: u32, req: u32, p: *const c_void, ps: usize, _r: *mut c_void, _rs: usize) -> u32 {
+    with_robot(|r| {
+        if r.model().primitive(id).is_none() {
+            return O_INVALID_PRIMITIVE_ID;
+        }
+        if (384..=386).contains(&req) {
+            if p.is_null() || ps < 4 {
+                return O_INVALID_ARG;
+            }
+            // SAFETY: OPrimitiveControl_CameraParam { longword camparam; }
+            let camparam = unsafe { std::ptr::read_unaligned(p.cast::<u32>()) };
+            return r.camera_control(id, req, camparam);
+        }
+        O_SUCCESS
+    })
+    .unwrap_or(O_FAIL)
 }
 
 pub unsafe extern "C" fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
@@ -211,21 +226,17 @@ pub extern "C" fn delete_vector(mem_id: u32) -> u32 {
     }
 }
 
-/// Colour detection tables: accepted and validated; the camera that would use them
-/// is not rendered yet.
+/// `SetCdtVectorData`: the camera detects colours with these tables from the next
+/// image on (robot-api 6.7).
 pub extern "C" fn set_cdt(mem_id: u32) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
     match rt.shm.base(mem_id) {
-        Some((p, n)) if n >= 192 => {
+        Some((p, n)) => {
             // SAFETY: a live region of n bytes.
             let b = unsafe { std::slice::from_raw_parts(p, n) };
-            if u32::from_le_bytes([b[16], b[17], b[18], b[19]]) == 1028 {
-                O_SUCCESS
-            } else {
-                4098 // oINVALID_DATA_TYPE
-            }
+            rt.vr.robot().set_cdt(b)
         }
-        _ => O_INVALID_ARG,
+        None => O_INVALID_ARG,
     }
 }
 

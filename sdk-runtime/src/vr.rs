@@ -59,7 +59,13 @@ pub struct VrService {
     trace: Option<Mutex<BufWriter<File>>>,
     speaker: Mutex<crate::audio::Speaker>,
     mic: Mutex<crate::audio::Mic>,
+    /// Images are rendered only when a CONNECT.CFG line names the camera service.
+    camera_wanted: std::sync::atomic::AtomicBool,
+    image: Mutex<Vec<u8>>,
 }
+
+/// The camera's service name: rendering is skipped unless something observes it.
+pub const CAMERA_SERVICE: &str = "OVirtualRobotComm.FbkImageSensor.OFbkImageVectorData.S";
 
 impl VrService {
     pub fn new(mut robot: VirtualRobot, trace: Option<File>, speaker: crate::audio::Speaker, mic: crate::audio::Mic) -> VrService {
@@ -70,7 +76,13 @@ impl VrService {
             trace: trace.map(|f| Mutex::new(BufWriter::new(f))),
             speaker: Mutex::new(speaker),
             mic: Mutex::new(mic),
+            camera_wanted: std::sync::atomic::AtomicBool::new(false),
+            image: Mutex::new(Vec::new()),
         }
+    }
+
+    pub fn want_camera(&self) {
+        self.camera_wanted.store(true, std::sync::atomic::Ordering::Release);
     }
 
     /// A sound vector received by the speaker.
@@ -131,6 +143,14 @@ impl VrService {
         if let Some(vector) = out.sensor_vector {
             self.publish(rt, SERVICE_SENSOR, vector);
         }
+        if out.camera_due && self.camera_wanted.load(std::sync::atomic::Ordering::Acquire) {
+            let mut img = self.image.lock().unwrap_or_else(|p| p.into_inner());
+            self.robot().render_image(out.frame, &mut img);
+            let v = std::mem::take(&mut *img);
+            drop(img);
+            self.publish_slice(rt, SERVICE_IMAGE, &v);
+            *self.image.lock().unwrap_or_else(|p| p.into_inner()) = v;
+        }
         let amplifier = self.robot().motor_power();
         let played = self.speaker.lock().unwrap_or_else(|p| p.into_inner()).step(out.frame, amplifier, |m| rt.diag.warn(m));
         if let Some((oid, sel)) = self.wiring().providers[SERVICE_SPEAKER] {
@@ -154,15 +174,20 @@ impl VrService {
         }
     }
 
-    /// Copies a finished vector into a new shared region and hands it (with the
-    /// region's one reference) to the system object that provides `service`.
-    fn publish(&self, rt: &Runtime, service: usize, mut vector: Vec<u8>) {
+    fn publish(&self, rt: &Runtime, service: usize, vector: Vec<u8>) {
+        self.publish_slice(rt, service, &vector);
+    }
+
+    /// Copies a finished vector into a new shared region (the one copy of its data flow:
+    /// a region is never rewritten while an observer may hold it, robot-api 7) and hands
+    /// it, with the region's one reference, to the system object providing `service`.
+    fn publish_slice(&self, rt: &Runtime, service: usize, vector: &[u8]) {
         let Some((oid, sel)) = self.wiring().providers[service] else { return };
         let Some((mem_id, base)) = rt.shm.alloc(vector.len()) else { return };
-        let len = vector.len() as u32;
-        let _ = vectors::set_region_fields(&mut vector, mem_id, 0, len);
         // SAFETY: a fresh region of vector.len() bytes.
-        unsafe { std::ptr::copy_nonoverlapping(vector.as_ptr(), base, vector.len()) };
+        let region = unsafe { std::slice::from_raw_parts_mut(base, vector.len()) };
+        region.copy_from_slice(vector);
+        let _ = vectors::set_region_fields(region, mem_id, 0, vector.len() as u32);
         let ev = VrEvent { kind: EVENT_DATA, service: service as u32, token: 0, mem_id, size: vector.len() as u32 };
         if rt.send(oid, sel, ev.bytes()).is_err() {
             rt.shm.unref(mem_id);

@@ -36,6 +36,9 @@ pub struct Args {
     /// Feed the microphones from this WAV file (default: silence)
     #[arg(long, value_name = "FILE")]
     mic_wav: Option<PathBuf>,
+    /// Camera images from this PPM/BMP file, or the frames of this directory (in name order), instead of the rendered scene
+    #[arg(long, value_name = "FILE|DIR")]
+    images: Option<PathBuf>,
     /// Write the virtual robot's trace (JSON lines: commands, sensor frames, LEDs) to FILE
     #[arg(long, value_name = "FILE")]
     trace: Option<PathBuf>,
@@ -96,6 +99,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         speed: args.speed,
         speaker_wav: args.speaker_wav.clone(),
         mic_wav: args.mic_wav.clone(),
+        images: args.images.clone(),
         control: args.control.clone(),
         ms_dir: args.ms_dir.clone(),
         design: args.design,

@@ -24,8 +24,11 @@ fn build(program: &Path, work: &Path, root: &Path) -> Result<PathBuf> {
     if !st.success() {
         bail!("cannot copy {}", program.display());
     }
-    // The programs include ../../common.mk relative to their object directories.
-    std::fs::copy(program.parent().context("parent")?.join("common.mk"), work.join("common.mk"))?;
+    // bench/programs include ../../common.mk relative to their object directories.
+    let common = program.parent().context("parent")?.join("common.mk");
+    if common.exists() {
+        std::fs::copy(common, work.join("common.mk"))?;
+    }
     let out = Command::new("make").arg(format!("OPENRSDK_ROOT={}", root.display())).arg("install").current_dir(&dst).output()?;
     if !out.status.success() {
         bail!("building {} failed:\n{}{}", program.display(), String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
@@ -115,5 +118,22 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path) -> Result<Vec<
     }
     let last = starts.iter().copied().fold(f64::MIN, f64::max);
     fig("cold start to the 10th DoStart (10 objects, process spawn included)", (last - t0 as f64) / 1e6, "ms");
+
+    // Virtual time: the leg program of the corpus, 60 s of robot time at --speed max.
+    let ms = build(&repo.join("testdata/programs/movelegs"), work, root)?;
+    let t = std::time::Instant::now();
+    let out = Command::new(exe).args(["run", "-q", "--speed", "max", "--for", "60s", "--sdk"]).arg(root).arg(&ms).output()?;
+    if !out.status.success() {
+        bail!("movelegs at --speed max failed: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    fig("movelegs: virtual-time speed-up at --speed max (60 s of robot time)", 60.0 / t.elapsed().as_secs_f64(), "×");
+
+    // Real time: how regular the 32 ms sensor vectors arrive at an object.
+    let ms = build(&programs.join("sensorjitter"), work, root)?;
+    let out = run_ms(exe, &ms, root)?;
+    let f = fields(&out, "BENCH jitter");
+    let get = |k: &str| f.iter().find(|(n, _)| n == k).map(|(_, v)| *v).with_context(|| format!("no {k} in:\n{out}"));
+    fig("sensor period jitter |Δt − 32 ms| p50 (real time, 1000 vectors)", get("p50_ns")? / 1000.0, "µs");
+    fig("sensor period jitter |Δt − 32 ms| p99", get("p99_ns")? / 1000.0, "µs");
     Ok(figs)
 }
