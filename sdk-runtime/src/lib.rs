@@ -25,6 +25,7 @@ pub mod host_api;
 mod interpose;
 pub mod loader;
 pub mod ms;
+pub mod net;
 pub mod object;
 pub mod power;
 pub mod robot_api;

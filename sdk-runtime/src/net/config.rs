@@ -1,0 +1,194 @@
+//! Network configuration of this robot: where endpoints bind, the port offset that
+//! keeps two robots on one host apart (network-api 11.2), the privileged-port remap
+//! (11.3) and the wireless-LAN settings (WLANCONF.TXT / WLANDFLT.TXT, 2.4).
+use std::collections::{BTreeMap, HashMap, HashSet};
+use std::net::Ipv4Addr;
+use std::sync::Mutex;
+
+/// Environment variables set by `cargo openr run` (`--net-bind`, `--port-offset`).
+pub const ENV_BIND: &str = "OPENR_NET_BIND";
+pub const ENV_PORT_OFFSET: &str = "OPENR_NET_PORT_OFFSET";
+/// Explicit remaps, `robot=host` pairs separated by commas (`21=2121,123=40123`).
+pub const ENV_PORT_MAP: &str = "OPENR_NET_PORT_MAP";
+
+/// Where a privileged robot port lands by default: 10000 + port (21 → 10021).
+pub const PRIVILEGED_BASE: u32 = 10000;
+
+pub struct NetConfig {
+    /// Host address endpoints bind to when the robot says IP_ADDR_ANY (or its own
+    /// address): 127.0.0.1 unless `--net-bind`.
+    pub bind: u32,
+    pub offset: u32,
+    pub map: HashMap<u16, u16>,
+    pub quiet: bool,
+    announced: Mutex<HashSet<(u16, u16, &'static str)>>,
+}
+
+impl NetConfig {
+    pub fn from_env(quiet: bool) -> NetConfig {
+        let bind = std::env::var(ENV_BIND)
+            .ok()
+            .and_then(|s| s.trim().parse::<Ipv4Addr>().ok())
+            .map_or(u32::from(Ipv4Addr::LOCALHOST), u32::from);
+        let offset = std::env::var(ENV_PORT_OFFSET).ok().and_then(|s| s.trim().parse().ok()).unwrap_or(0);
+        let map = std::env::var(ENV_PORT_MAP).map(|s| parse_port_map(&s)).unwrap_or_default();
+        NetConfig { bind, offset, map, quiet, announced: Mutex::new(HashSet::new()) }
+    }
+
+    /// The host port for a robot port: explicit map, else privileged ports moved to
+    /// 10000 + p; without the offset. 0 (any) stays 0.
+    fn remap(&self, port: u16) -> u32 {
+        if port == 0 {
+            return 0;
+        }
+        if let Some(&p) = self.map.get(&port) {
+            return p.into();
+        }
+        if port < 1024 {
+            PRIVILEGED_BASE + u32::from(port)
+        } else {
+            port.into()
+        }
+    }
+
+    /// Host port of a local bind/listen: remap + this robot's offset; None when the
+    /// result does not fit.
+    pub fn local_port(&self, port: u16, what: &'static str) -> Option<u16> {
+        if port == 0 {
+            return Some(0);
+        }
+        let host = u16::try_from(self.remap(port) + self.offset).ok()?;
+        if host != port {
+            self.announce(port, host, what);
+        }
+        Some(host)
+    }
+
+    /// Host port of a destination: only servers on this host (loopback) are moved, and
+    /// only by the remap (a peer robot's ports are its own business).
+    pub fn remote_port(&self, addr: u32, port: u16, what: &'static str) -> u16 {
+        if !super::sys::is_loopback(addr) {
+            return port;
+        }
+        let host = u16::try_from(self.remap(port)).unwrap_or(port);
+        if host != port {
+            self.announce(port, host, what);
+        }
+        host
+    }
+
+    /// The robot's view of a peer's port (inverse of `remote_port`).
+    pub fn robot_peer_port(&self, addr: u32, port: u16) -> u16 {
+        if !super::sys::is_loopback(addr) {
+            return port;
+        }
+        if let Some((&robot, _)) = self.map.iter().find(|(_, &h)| h == port) {
+            return robot;
+        }
+        if (PRIVILEGED_BASE..PRIVILEGED_BASE + 1024).contains(&u32::from(port)) && !self.map.values().any(|&h| h == port) {
+            let robot = (u32::from(port) - PRIVILEGED_BASE) as u16;
+            if !self.map.contains_key(&robot) {
+                return robot;
+            }
+        }
+        port
+    }
+
+    /// Host address for a local bind of `addr` (robot view).
+    pub fn local_addr(&self, addr: u32, robot_ip: u32) -> u32 {
+        if addr == 0 || addr == robot_ip {
+            self.bind
+        } else {
+            addr
+        }
+    }
+
+    fn announce(&self, robot: u16, host: u16, what: &'static str) {
+        let mut seen = self.announced.lock().unwrap_or_else(|p| p.into_inner());
+        if seen.insert((robot, host, what)) && !self.quiet {
+            eprintln!("net: robot port {robot} ({what}) is host port {host}");
+        }
+    }
+}
+
+pub fn parse_port_map(s: &str) -> HashMap<u16, u16> {
+    s.split([',', ' '])
+        .filter_map(|pair| {
+            let (a, b) = pair.split_once('=')?;
+            Some((a.trim().parse().ok()?, b.trim().parse().ok()?))
+        })
+        .collect()
+}
+
+/// The shipped defaults of WLANDFLT.TXT (network-api 2.4).
+pub const WLAN_DEFAULTS: &[(&str, &str)] = &[
+    ("HOSTNAME", "AIBO"),
+    ("ETHER_IP", "10.0.1.100"),
+    ("ETHER_NETMASK", "255.255.255.0"),
+    ("IP_GATEWAY", "10.0.1.1"),
+    ("ESSID", "AIBONET"),
+    ("WEPENABLE", "1"),
+    ("WEPKEY", "AIBO2"),
+    ("APMODE", "2"),
+    ("CHANNEL", "3"),
+];
+
+/// Parses `KEY=VALUE` lines (`#` comments, blanks ignored).
+pub fn parse_wlan(text: &str) -> BTreeMap<String, String> {
+    text.lines()
+        .map(|l| l.split('#').next().unwrap_or("").trim())
+        .filter_map(|l| l.split_once('='))
+        .map(|(k, v)| (k.trim().to_ascii_uppercase(), v.trim().to_string()))
+        .filter(|(k, _)| !k.is_empty())
+        .collect()
+}
+
+/// The robot's wireless settings: defaults, overridden by WLANDFLT.TXT, overridden by
+/// WLANCONF.TXT (both in /MS/OPEN-R/SYSTEM/CONF).
+pub fn wlan_settings() -> BTreeMap<String, String> {
+    let mut m: BTreeMap<String, String> = WLAN_DEFAULTS.iter().map(|(k, v)| (k.to_string(), v.to_string())).collect();
+    if let Some(rt) = crate::runtime::Runtime::get() {
+        for file in ["/MS/OPEN-R/SYSTEM/CONF/WLANDFLT.TXT", "/MS/OPEN-R/SYSTEM/CONF/WLANCONF.TXT"] {
+            if let Some(text) = rt.ms.existing(file).and_then(|p| std::fs::read_to_string(p).ok()) {
+                m.extend(parse_wlan(&text));
+            }
+        }
+    }
+    m
+}
+
+pub fn parse_ip(s: &str) -> Option<u32> {
+    s.trim().parse::<Ipv4Addr>().ok().map(u32::from)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cfg(offset: u32, map: &str) -> NetConfig {
+        NetConfig { bind: 0x7f000001, offset, map: parse_port_map(map), quiet: true, announced: Mutex::new(HashSet::new()) }
+    }
+
+    #[test]
+    fn ports() {
+        let c = cfg(5, "123=40123");
+        assert_eq!(c.local_port(54321, "t"), Some(54326));
+        assert_eq!(c.local_port(21, "t"), Some(10026));
+        assert_eq!(c.local_port(0, "t"), Some(0));
+        assert_eq!(c.local_port(65535, "t"), None);
+        assert_eq!(c.remote_port(0x7f000001, 123, "t"), 40123);
+        assert_eq!(c.remote_port(0x7f000001, 53, "t"), 10053);
+        assert_eq!(c.remote_port(0x0a000102, 123, "t"), 123);
+        assert_eq!(c.remote_port(0x7f000001, 40000, "t"), 40000);
+        assert_eq!(c.robot_peer_port(0x7f000001, 40123), 123);
+        assert_eq!(c.robot_peer_port(0x7f000001, 10053), 53);
+        assert_eq!(c.robot_peer_port(0x7f000001, 45000), 45000);
+    }
+
+    #[test]
+    fn wlan() {
+        let m = parse_wlan("# c\nETHER_IP=10.0.1.7\n essid = X # y\n\n");
+        assert_eq!(m["ETHER_IP"], "10.0.1.7");
+        assert_eq!(m["ESSID"], "X");
+    }
+}

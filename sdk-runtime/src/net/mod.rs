@@ -1,0 +1,306 @@
+//! The IPStack: ANT endpoints (TCP, UDP, DNS) on host sockets (network-api 1–5, 8, 10).
+//!
+//! Objects reach it through `openr_runtime_net_v1` (`cxx/openr_net.h`), never through
+//! the object message loop: libantMCOOP decodes each ANT message into a flat
+//! [`Request`] and hands over a copy of the whole message plus an `encode` function.
+//! Requests are tried at once on the caller's thread (non-blocking syscalls); what
+//! would block is parked and finished by one poll thread; DNS lookups run on worker
+//! threads. Replies are encoded into the message copy and queued to the object's
+//! (oid, selector) with [`Runtime::send`](crate::runtime::Runtime::send), so objects
+//! only ever run them from their own message loop. Every completion happens under
+//! one lock, which gives the ordering of 1.10: per object in completion order, per
+//! endpoint FIFO, everything pending before a Close reply.
+#![deny(unsafe_op_in_unsafe_fn)]
+
+pub mod config;
+mod dns;
+mod stack;
+mod sys;
+
+use std::ffi::{c_char, c_void, CStr};
+use std::os::fd::{AsRawFd, FromRawFd, OwnedFd};
+use std::sync::mpsc;
+use std::sync::{Mutex, OnceLock};
+
+use config::NetConfig;
+use stack::State;
+
+pub const ABI_VERSION: u32 = 1;
+
+/// Mirror of `struct openr_net_request`.
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub struct Request {
+    pub proto: i32,
+    pub op: i32,
+    pub endpoint: u32,
+    pub addr: u32,
+    pub port: u32,
+    pub laddr: u32,
+    pub lport: u32,
+    pub buffer: *mut u8,
+    pub size: i32,
+    pub size_min: i32,
+    pub flags: i32,
+    pub linger_time: i32,
+    pub value: i32,
+    pub value2: i32,
+    pub region: u32,
+    pub region_base: *mut c_void,
+    pub addr_list: [u32; 3],
+    pub name: [u8; 101],
+    pub str_: [u8; 101],
+}
+
+/// Mirror of `struct openr_net_result`.
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub struct NetResult {
+    pub proto: i32,
+    pub op: i32,
+    pub error: i32,
+    pub laddr: u32,
+    pub lport: u32,
+    pub faddr: u32,
+    pub fport: u32,
+    pub size: i32,
+    pub ready: i32,
+    pub module: *mut c_void,
+    pub endpoint: u32,
+    pub region: u32,
+    pub base: *mut c_void,
+    pub buf_size: u32,
+    pub name: [u8; 101],
+    pub name_valid: i32,
+    pub server_address: u32,
+    pub host_address: u32,
+    pub host_valid: i32,
+    pub n_address: i32,
+    pub n_alias: i32,
+    pub nscount: i32,
+    pub addr_list: [u32; 3],
+    pub param_type: i32,
+    pub i32_: i32,
+    pub str_: [u8; 33],
+}
+
+// Raw pointers inside are addresses in the one shared address space.
+unsafe impl Send for Request {}
+unsafe impl Send for NetResult {}
+
+impl NetResult {
+    pub fn new(req: &Request, error: i32) -> NetResult {
+        // SAFETY: all-zero is a valid value of this plain C struct.
+        let mut r: NetResult = unsafe { std::mem::zeroed() };
+        r.proto = req.proto;
+        r.op = req.op;
+        r.error = error;
+        r
+    }
+
+    pub fn set_name(&mut self, s: &str) {
+        let n = s.len().min(99);
+        self.name = [0; 101];
+        self.name[..n].copy_from_slice(&s.as_bytes()[..n]);
+        self.name_valid = 1;
+    }
+}
+
+impl Request {
+    pub fn name(&self) -> String {
+        cstr_field(&self.name)
+    }
+    pub fn str_value(&self) -> String {
+        cstr_field(&self.str_)
+    }
+}
+
+fn cstr_field(b: &[u8]) -> String {
+    let end = b.iter().position(|&c| c == 0).unwrap_or(b.len());
+    String::from_utf8_lossy(&b[..end]).into_owned()
+}
+
+pub type EncodeFn = unsafe extern "C" fn(*mut c_void, *const NetResult);
+
+/// Where a completed operation's reply goes.
+pub enum Target {
+    /// `Send`: the encoded message copy is queued to (oid, selector).
+    Async { oid: usize, selector: u32, blob: Vec<u8> },
+    /// `Call`: the caller waits on this channel and encodes into its own message.
+    Sync(mpsc::SyncSender<NetResult>),
+}
+
+/// An operation waiting for its reply.
+pub struct Pending {
+    pub req: Request,
+    pub target: Target,
+    pub encode: EncodeFn,
+}
+
+impl Pending {
+    /// Delivers the reply (exactly once).
+    pub fn complete(self, res: NetResult) {
+        if trace() {
+            eprintln!(
+                "net: reply proto {} op {} endpoint {} -> error {} size {} ({})",
+                res.proto,
+                res.op,
+                self.req.endpoint,
+                res.error,
+                res.size,
+                if matches!(self.target, Target::Sync(_)) { "call" } else { "send" }
+            );
+        }
+        match self.target {
+            Target::Async { oid, selector, mut blob } => {
+                // SAFETY: `encode` comes from the object's library and writes only inside
+                // a message of the size it declared, which `blob` has.
+                unsafe { (self.encode)(blob.as_mut_ptr().cast(), &res) };
+                if let Some(rt) = crate::runtime::Runtime::get() {
+                    let _ = rt.send(oid, selector, blob);
+                }
+            }
+            Target::Sync(tx) => {
+                let _ = tx.send(res);
+            }
+        }
+    }
+
+    pub fn fail(self, error: i32) {
+        let res = NetResult::new(&self.req, error);
+        self.complete(res);
+    }
+}
+
+/// `OPENR_NET_TRACE=1`: every request and reply on stderr.
+pub fn trace() -> bool {
+    static T: OnceLock<bool> = OnceLock::new();
+    *T.get_or_init(|| std::env::var_os("OPENR_NET_TRACE").is_some_and(|v| v != "0"))
+}
+
+/// The IPStack of this process.
+pub struct Net {
+    pub state: Mutex<State>,
+    pub config: NetConfig,
+    wake_fd: OwnedFd,
+}
+
+static NET: OnceLock<Net> = OnceLock::new();
+
+/// The IPStack, started on first use (its poll thread included).
+pub fn net() -> &'static Net {
+    let mut started = false;
+    let n = NET.get_or_init(|| {
+        started = true;
+        let quiet = crate::runtime::Runtime::get().is_some_and(|rt| rt.diag.quiet);
+        // SAFETY: plain syscall; a fresh descriptor we own.
+        let fd = unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) };
+        assert!(fd >= 0, "eventfd failed");
+        Net { state: Mutex::new(State::new()), config: NetConfig::from_env(quiet), wake_fd: unsafe { OwnedFd::from_raw_fd(fd) } }
+    });
+    if started {
+        std::thread::Builder::new().name("ipstack".into()).spawn(|| stack::poll_loop(net())).expect("spawn the IPStack thread");
+    }
+    n
+}
+
+impl Net {
+    pub fn lock(&self) -> std::sync::MutexGuard<'_, State> {
+        self.state.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// Makes the poll thread rebuild its descriptor set.
+    pub fn wake(&self) {
+        let one: u64 = 1;
+        // SAFETY: writes 8 bytes from `one`.
+        unsafe { libc::write(self.wake_fd.as_raw_fd(), (&one as *const u64).cast(), 8) };
+    }
+
+    fn drain_wake(&self) {
+        let mut v: u64 = 0;
+        // SAFETY: reads 8 bytes into `v`.
+        unsafe { libc::read(self.wake_fd.as_raw_fd(), (&mut v as *mut u64).cast(), 8) };
+    }
+}
+
+/// Mirror of `struct openr_net_api`.
+#[repr(C)]
+pub struct NetApi {
+    pub abi_version: u32,
+    pub size: u32,
+    endpoint_protocol: extern "C" fn(u32) -> i32,
+    submit: unsafe extern "C" fn(*const Request, *mut c_void, usize, EncodeFn, *mut c_void, u32, i32) -> i32,
+    config_value: unsafe extern "C" fn(*const c_char, *mut c_char, usize) -> i32,
+    robot_number: extern "C" fn() -> u32,
+}
+
+/// The table libantMCOOP / libERA201D1 find with `dlsym(RTLD_DEFAULT,
+/// "openr_runtime_net_v1")`; exported by the `cargo-openr` binary (its build.rs).
+#[no_mangle]
+#[used]
+pub static openr_runtime_net_v1: NetApi = NetApi {
+    abi_version: ABI_VERSION,
+    size: std::mem::size_of::<NetApi>() as u32,
+    endpoint_protocol,
+    submit,
+    config_value,
+    robot_number,
+};
+
+/// Keeps the table in the final link; call it from anything that always runs.
+pub fn init() -> *const NetApi {
+    std::hint::black_box(&openr_runtime_net_v1)
+}
+
+extern "C" fn endpoint_protocol(endpoint: u32) -> i32 {
+    net().lock().protocol_of(endpoint)
+}
+
+unsafe extern "C" fn submit(req: *const Request, blob: *mut c_void, size: usize, encode: EncodeFn, oid: *mut c_void, selector: u32, sync: i32) -> i32 {
+    if req.is_null() || blob.is_null() {
+        return -1;
+    }
+    // SAFETY: a request struct filled by libantMCOOP.
+    let req = unsafe { *req };
+    let net = net();
+    if trace() {
+        eprintln!("net: request proto {} op {} endpoint {} size {} ({})", req.proto, req.op, req.endpoint, req.size, if sync != 0 { "call" } else { "send" });
+    }
+    if sync != 0 {
+        let (tx, rx) = mpsc::sync_channel(1);
+        stack::handle(net, Pending { req, target: Target::Sync(tx), encode });
+        match rx.recv() {
+            Ok(res) => {
+                // SAFETY: `blob` is the caller's message of `size` bytes; `encode` writes inside it.
+                unsafe { encode(blob, &res) };
+                0
+            }
+            Err(_) => -1,
+        }
+    } else {
+        // SAFETY: `blob` has `size` readable bytes (the message's real type).
+        let copy = unsafe { std::slice::from_raw_parts(blob.cast::<u8>(), size) }.to_vec();
+        stack::handle(net, Pending { req, target: Target::Async { oid: oid as usize, selector, blob: copy }, encode });
+        0
+    }
+}
+
+unsafe extern "C" fn config_value(key: *const c_char, out: *mut c_char, cap: usize) -> i32 {
+    if key.is_null() || out.is_null() || cap == 0 {
+        return -1;
+    }
+    // SAFETY: a NUL-terminated key from the object.
+    let key = unsafe { CStr::from_ptr(key) }.to_string_lossy().to_ascii_uppercase();
+    let Some(v) = net().lock().registry_value(&key) else { return -1 };
+    let n = v.len().min(cap - 1);
+    // SAFETY: `out` has room for `cap` bytes.
+    unsafe {
+        std::ptr::copy_nonoverlapping(v.as_ptr(), out.cast::<u8>(), n);
+        *out.add(n) = 0;
+    }
+    0
+}
+
+extern "C" fn robot_number() -> u32 {
+    net().config.offset
+}
