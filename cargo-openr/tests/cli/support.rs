@@ -152,3 +152,64 @@ extern "C" {
     #[link_name = "kill"]
     fn libc_kill(pid: i32, sig: i32) -> i32;
 }
+
+/// Same as [`run_ms`], feeding the runtime's stdin: each chunk is written once `at` has
+/// passed since the start, then stdin is closed (the objects read EOF from then on).
+pub fn run_ms_with_stdin(ms: &Path, args: &[&str], input: &[(std::time::Duration, &[u8])]) -> RunOutput {
+    use std::io::{Read, Write};
+    use std::time::{Duration, Instant};
+    let mut child = Command::new(exe())
+        .env("OPENRSDK_ROOT", sdk_root())
+        .arg("run")
+        .arg(ms)
+        .args(args)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let chunks: Vec<(Duration, Vec<u8>)> = input.iter().map(|(d, b)| (*d, b.to_vec())).collect();
+    let start = Instant::now();
+    let in_t = std::thread::spawn(move || {
+        for (at, bytes) in chunks {
+            let now = start.elapsed();
+            if at > now {
+                std::thread::sleep(at - now);
+            }
+            if stdin.write_all(&bytes).and_then(|_| stdin.flush()).is_err() {
+                break;
+            }
+        }
+        drop(stdin);
+    });
+    let mut out_pipe = child.stdout.take().unwrap();
+    let mut err_pipe = child.stderr.take().unwrap();
+    let out_t = std::thread::spawn(move || { let mut s = Vec::new(); let _ = out_pipe.read_to_end(&mut s); s });
+    let err_t = std::thread::spawn(move || { let mut s = Vec::new(); let _ = err_pipe.read_to_end(&mut s); s });
+    let status = loop {
+        if let Some(st) = child.try_wait().unwrap() {
+            break st;
+        }
+        if start.elapsed() > Duration::from_secs(60) {
+            let _ = child.kill();
+            panic!("cargo openr run {} hung for 60 s", ms.display());
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    };
+    let _ = in_t.join();
+    RunOutput {
+        code: status.code(),
+        stdout: String::from_utf8_lossy(&out_t.join().unwrap()).into_owned(),
+        stderr: String::from_utf8_lossy(&err_t.join().unwrap()).into_owned(),
+    }
+}
+
+/// The records of a `--trace` file (JSON lines), in order.
+pub fn read_trace(path: &Path) -> Vec<serde_json::Value> {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("cannot read trace {}: {e}", path.display()));
+    text.lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("bad trace line {l:?}: {e}")))
+        .collect()
+}
