@@ -47,6 +47,15 @@ pub struct RunOptions {
     pub control: Option<PathBuf>,
 }
 
+/// How a run went.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Outcome {
+    pub ended: Ended,
+    /// Robot frames (8 ms) run, and how many of them started late in real time.
+    pub frames: u64,
+    pub late_frames: u64,
+}
+
 /// How a run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Ended {
@@ -71,7 +80,7 @@ const CONNECT_TIMEOUT: Duration = Duration::from_secs(20);
 const SHUTDOWN_TIMEOUT: Duration = Duration::from_secs(3);
 
 /// Loads and runs the stick until it ends; returns how it ended.
-pub fn run(opts: &RunOptions) -> Result<Ended> {
+pub fn run(opts: &RunOptions) -> Result<Outcome> {
     let ms = MsDir::new(&opts.ms_dir).map_err(|e| Error::io(&opts.ms_dir, e))?;
     let (object_cfg_path, objects) = cfg::object_cfg(&ms, &opts.design)?;
     let (connect_path, connections) = cfg::connect_cfg(&ms, &opts.design)?;
@@ -169,7 +178,8 @@ pub fn run(opts: &RunOptions) -> Result<Ended> {
     }
     rt.vr.flush_trace();
     unsafe { libc::fflush(std::ptr::null_mut()) };
-    Ok(ended)
+    let load = |c: &std::sync::atomic::AtomicU64| c.load(std::sync::atomic::Ordering::Relaxed);
+    Ok(Outcome { ended, frames: load(&rt.vr.frames), late_frames: load(&rt.vr.late_frames) })
 }
 
 /// A scratch directory for the run's extracted objects, removed when dropped.

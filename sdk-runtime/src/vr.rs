@@ -62,6 +62,9 @@ pub struct VrService {
     /// Images are rendered only when a CONNECT.CFG line names the camera service.
     camera_wanted: std::sync::atomic::AtomicBool,
     image: Mutex<Vec<u8>>,
+    /// Frames run, and those that started more than a frame late (real-time speeds).
+    pub frames: std::sync::atomic::AtomicU64,
+    pub late_frames: std::sync::atomic::AtomicU64,
 }
 
 /// The camera's service name: rendering is skipped unless something observes it.
@@ -78,6 +81,8 @@ impl VrService {
             mic: Mutex::new(mic),
             camera_wanted: std::sync::atomic::AtomicBool::new(false),
             image: Mutex::new(Vec::new()),
+            frames: std::sync::atomic::AtomicU64::new(0),
+            late_frames: std::sync::atomic::AtomicU64::new(0),
         }
     }
 
@@ -224,6 +229,7 @@ pub fn run_frames(rt: &'static Runtime) -> ! {
                     std::thread::sleep(next - now);
                 } else if now - next > period {
                     late += 1;
+                    rt.vr.late_frames.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                     if late >= late_reported * 2 + 1 {
                         rt.diag.warn(&format!("virtual robot: {late} frame(s) started late (the host could not keep up)"));
                         late_reported = late;
@@ -233,6 +239,7 @@ pub fn run_frames(rt: &'static Runtime) -> ! {
             }
         }
         rt.vr.step(rt);
+        rt.vr.frames.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let now = rt.clock.advance();
         rt.timers.fire_due(now, |dest, sel, msg| {
             let _ = rt.send(dest, sel, msg);

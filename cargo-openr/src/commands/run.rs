@@ -51,6 +51,12 @@ pub struct Args {
     /// More runtime diagnostics on stderr
     #[arg(short, long)]
     verbose: bool,
+    /// Host address the robot's network endpoints bind to (default 127.0.0.1)
+    #[arg(long, value_name = "ADDR")]
+    net_bind: Option<std::net::Ipv4Addr>,
+    /// Add N to every port the robot binds (privileged ports first move to 10000+port), so two robots can run one program
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    port_offset: u16,
 }
 
 fn parse_speed(s: &str) -> Result<Speed, String> {
@@ -92,6 +98,7 @@ fn sdk_root(explicit: Option<PathBuf>) -> anyhow::Result<PathBuf> {
 }
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
+    sdk_runtime::net::config::apply_cli(args.net_bind, args.port_offset);
     let root = sdk_root(args.sdk.clone())?;
     let opts = RunOptions {
         system_objects: install::system_objects(&root),
@@ -110,14 +117,17 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     if !args.quiet {
         shell.status("Running", &args.ms_dir.display().to_string());
     }
-    let ended = boot::run(&opts).with_context(|| format!("cannot run {}", args.ms_dir.display()))?;
+    let outcome = boot::run(&opts).with_context(|| format!("cannot run {}", args.ms_dir.display()))?;
     if !args.quiet {
-        let how = match ended {
+        let how = match outcome.ended {
             Ended::TimeUp => "time limit reached".to_string(),
             Ended::Signal(s) => format!("signal {s}"),
             Ended::Shutdown => "OPENR::Shutdown".to_string(),
         };
-        shell.status("Finished", &format!("{} ({how})", args.ms_dir.display()));
+        shell.status(
+            "Finished",
+            &format!("{} ({how}; {} frames, {} late)", args.ms_dir.display(), outcome.frames, outcome.late_frames),
+        );
     }
     Ok(())
 }

@@ -87,6 +87,26 @@ pub fn raw_ping_pong(rounds: usize) -> (f64, f64, f64) {
     (rtt[rounds / 2], rtt[rounds * 99 / 100], 2.0 * rounds as f64 / secs)
 }
 
+/// Runs `n` runtimes on `ms` at once for 10 s; returns (frames, late frames) summed.
+fn robots_in_real_time(exe: &Path, ms: &Path, root: &Path, n: usize) -> Result<(u64, u64)> {
+    let children: Vec<_> = (0..n)
+        .map(|_| Command::new(exe).args(["run", "--for", "10s", "--sdk"]).arg(root).arg(ms).stdout(std::process::Stdio::null()).stderr(std::process::Stdio::piped()).spawn())
+        .collect::<std::io::Result<_>>()?;
+    let (mut frames, mut late) = (0, 0);
+    for c in children {
+        let out = c.wait_with_output()?;
+        let err = String::from_utf8_lossy(&out.stderr);
+        let line = err.lines().find(|l| l.contains("Finished")).with_context(|| format!("no summary in:\n{err}"))?;
+        let num = |suffix: &str| -> Option<u64> {
+            let before = line.split(suffix).next()?;
+            before.rsplit(|c: char| !c.is_ascii_digit()).find(|w| !w.is_empty())?.parse().ok()
+        };
+        frames += num(" frames").context("frame count")?;
+        late += num(" late").context("late count")?;
+    }
+    Ok((frames, late))
+}
+
 /// Runs every benchmark; `repo` holds `bench/programs`, `root` is an installed SDK root.
 pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path) -> Result<Vec<Figure>> {
     let programs = repo.join("bench/programs");
@@ -135,5 +155,19 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path) -> Result<Vec<
     let get = |k: &str| f.iter().find(|(n, _)| n == k).map(|(_, v)| *v).with_context(|| format!("no {k} in:\n{out}"));
     fig("sensor period jitter |Δt − 32 ms| p50 (real time, 1000 vectors)", get("p50_ns")? / 1000.0, "µs");
     fig("sensor period jitter |Δt − 32 ms| p99", get("p99_ns")? / 1000.0, "µs");
+
+    // Many robots: N runtimes at once, each with the camera at 30 fps and an object that
+    // reads every image and sensor vector, 10 s of real time.
+    let ms = build(&programs.join("camwatch"), work, root)?;
+    let mut best = 0;
+    for n in [1usize, 2, 3, 4, 6, 8] {
+        let (frames, late) = robots_in_real_time(exe, &ms, root, n)?;
+        let pct = 100.0 * late as f64 / frames.max(1) as f64;
+        fig(&format!("{n} ERS-7(s) with camera in real time: late frames"), pct, "%");
+        if pct < 0.1 {
+            best = n;
+        }
+    }
+    fig("ERS-7s with camera running in real time with < 0.1% late frames", best as f64, "robots");
     Ok(figs)
 }
