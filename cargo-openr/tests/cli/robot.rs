@@ -510,3 +510,47 @@ fn movelegs_reaches_its_base_posture() {
         }
     }
 }
+
+#[test]
+fn imagesave_sees_the_ers7_layers_at_30_fps_and_writes_bmps() {
+    let b = build("imagesave");
+    let ms = b.ms();
+    let out = run_ms(&ms, &["--for", "3s"]);
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stdout.contains("ImageSave : 4 layers, camera ID matches"), "{}", out.stdout);
+    for layer in [
+        "ImageSave : layer H type 24 208x160 skip 1040 size 199680",
+        "ImageSave : layer M type 24 104x80 skip 520 size 49920",
+        "ImageSave : layer L type 24 52x40 skip 260 size 12480",
+        "ImageSave : layer C type 20 104x80 skip 0 size 8320",
+    ] {
+        assert!(out.stdout.contains(layer), "missing {layer:?}\n{}", out.stdout);
+    }
+    // 30 images/s on the 8 ms frame counter: consecutive images 4 or 5 frames apart,
+    // field counter +1 per image
+    let images: Vec<(u64, u64)> = out
+        .lines_starting("ImageSave : image ")
+        .iter()
+        .map(|l| {
+            let w: Vec<&str> = l.split_whitespace().collect();
+            (w[5].parse().unwrap(), w[7].parse().unwrap())
+        })
+        .collect();
+    assert_eq!(images.len(), 10, "{}", out.stdout);
+    for w in images.windows(2) {
+        assert!(matches!(w[1].0 - w[0].0, 4 | 5), "image frames {images:?}");
+        assert_eq!(w[1].1, w[0].1 + 1, "field counters {images:?}");
+    }
+    // three 208x160 24-bit BMPs, not a uniform colour
+    for i in 0..3 {
+        assert!(out.stdout.contains(&format!("ImageSave : saved /MS/IMG{i}.BMP")), "{}", out.stdout);
+        let bmp = std::fs::read(ms.join(format!("IMG{i}.BMP"))).unwrap();
+        let le32 = |o: usize| u32::from_le_bytes([bmp[o], bmp[o + 1], bmp[o + 2], bmp[o + 3]]);
+        assert_eq!(&bmp[..2], b"BM");
+        assert_eq!(bmp.len(), 54 + 208 * 160 * 3);
+        assert_eq!(le32(2) as usize, bmp.len());
+        assert_eq!((le32(18), le32(22), u16::from_le_bytes([bmp[28], bmp[29]])), (208, 160, 24));
+        let first = &bmp[54..57];
+        assert!(bmp[54..].chunks(3).any(|px| px != first), "IMG{i}.BMP is one colour");
+    }
+}
