@@ -1,6 +1,7 @@
 //! Integration tests of the `cargo-openr` binary: one test binary, a module per area.
 mod clock;
 mod corpus;
+mod net;
 mod robot;
 mod run;
 mod sdk;

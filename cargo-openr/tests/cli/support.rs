@@ -213,3 +213,133 @@ pub fn read_trace(path: &Path) -> Vec<serde_json::Value> {
         .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("bad trace line {l:?}: {e}")))
         .collect()
 }
+
+/// A `cargo openr run` that keeps running while the test talks to it (over the network
+/// or its stdin); stdout and stderr are collected as they come.
+pub struct Running {
+    child: Option<std::process::Child>,
+    stdin: Option<std::process::ChildStdin>,
+    stdout: std::sync::Arc<std::sync::Mutex<String>>,
+    stderr: std::sync::Arc<std::sync::Mutex<String>>,
+    readers: Vec<std::thread::JoinHandle<()>>,
+}
+
+/// Starts `cargo openr run <ms> <args>` with extra environment variables and returns at once.
+pub fn spawn_ms(ms: &Path, args: &[&str], env: &[(&str, &str)]) -> Running {
+    use std::io::Read;
+    use std::sync::{Arc, Mutex};
+    let mut child = Command::new(exe())
+        .env("OPENRSDK_ROOT", sdk_root())
+        .envs(env.iter().copied())
+        .arg("run")
+        .arg(ms)
+        .args(args)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let stdout = Arc::new(Mutex::new(String::new()));
+    let stderr = Arc::new(Mutex::new(String::new()));
+    let mut readers = Vec::new();
+    let pipes: [(Box<dyn Read + Send>, Arc<Mutex<String>>); 2] = [
+        (Box::new(child.stdout.take().unwrap()), stdout.clone()),
+        (Box::new(child.stderr.take().unwrap()), stderr.clone()),
+    ];
+    for (mut pipe, sink) in pipes {
+        readers.push(std::thread::spawn(move || {
+            let mut buf = [0u8; 4096];
+            while let Ok(n) = pipe.read(&mut buf) {
+                if n == 0 {
+                    break;
+                }
+                sink.lock().unwrap().push_str(&String::from_utf8_lossy(&buf[..n]));
+            }
+        }));
+    }
+    let stdin = child.stdin.take();
+    Running { child: Some(child), stdin, stdout, stderr, readers }
+}
+
+impl Running {
+    pub fn stdout(&self) -> String {
+        self.stdout.lock().unwrap().clone()
+    }
+
+    pub fn stderr(&self) -> String {
+        self.stderr.lock().unwrap().clone()
+    }
+
+    /// Waits until stdout contains `needle` (true) or `timeout` passes / the run ends (false).
+    pub fn wait_for(&mut self, needle: &str, timeout: std::time::Duration) -> bool {
+        let start = std::time::Instant::now();
+        loop {
+            if self.stdout().contains(needle) {
+                return true;
+            }
+            let exited = self.child.as_mut().map_or(true, |c| c.try_wait().ok().flatten().is_some());
+            if exited {
+                std::thread::sleep(std::time::Duration::from_millis(50));
+                return self.stdout().contains(needle);
+            }
+            if start.elapsed() > timeout {
+                return false;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(10));
+        }
+    }
+
+    /// Writes `text` to the runtime's stdin (the objects' console input).
+    pub fn write_stdin(&mut self, text: &str) {
+        use std::io::Write;
+        let stdin = self.stdin.as_mut().expect("stdin still open");
+        stdin.write_all(text.as_bytes()).unwrap();
+        stdin.flush().unwrap();
+    }
+
+    /// Waits for the run to end by itself (at most `timeout`, then SIGTERM).
+    pub fn wait(mut self, timeout: std::time::Duration) -> RunOutput {
+        let start = std::time::Instant::now();
+        let mut child = self.child.take().unwrap();
+        let status = loop {
+            if let Some(st) = child.try_wait().unwrap() {
+                break st;
+            }
+            if start.elapsed() > timeout {
+                unsafe { libc_kill(child.id() as i32, 15) };
+                let t = std::time::Instant::now();
+                loop {
+                    if child.try_wait().unwrap().is_some() {
+                        break;
+                    }
+                    if t.elapsed() > std::time::Duration::from_secs(20) {
+                        let _ = child.kill();
+                        break;
+                    }
+                    std::thread::sleep(std::time::Duration::from_millis(10));
+                }
+                break child.wait().unwrap();
+            }
+            std::thread::sleep(std::time::Duration::from_millis(10));
+        };
+        drop(self.stdin.take());
+        for r in self.readers.drain(..) {
+            let _ = r.join();
+        }
+        RunOutput { code: status.code(), stdout: self.stdout(), stderr: self.stderr() }
+    }
+
+    /// SIGTERM now (the runtime's clean shutdown) and the output.
+    pub fn stop(self) -> RunOutput {
+        self.wait(std::time::Duration::ZERO)
+    }
+}
+
+impl Drop for Running {
+    fn drop(&mut self) {
+        if let Some(mut c) = self.child.take() {
+            let _ = c.kill();
+            let _ = c.wait();
+        }
+    }
+}

@@ -111,6 +111,17 @@ impl NetConfig {
     }
 }
 
+/// `cargo openr run --net-bind ADDR --port-offset N`: hands the settings to the
+/// IPStack (which reads them when it starts) through the environment.
+pub fn apply_cli(bind: Option<Ipv4Addr>, port_offset: u16) {
+    if let Some(a) = bind {
+        std::env::set_var(ENV_BIND, a.to_string());
+    }
+    if port_offset != 0 {
+        std::env::set_var(ENV_PORT_OFFSET, port_offset.to_string());
+    }
+}
+
 pub fn parse_port_map(s: &str) -> HashMap<u16, u16> {
     s.split([',', ' '])
         .filter_map(|pair| {
