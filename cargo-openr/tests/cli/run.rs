@@ -216,6 +216,27 @@ fn a_crashing_object_is_reported_with_its_entry_and_backtrace() {
     }
 }
 
+#[test]
+fn a_crash_keeps_what_other_objects_printed() {
+    // HELLO (built with -DOPENR_DEBUG: prints in DoInit) and CRASH on one stick.
+    let hello = build("hello");
+    let mk = hello.dir.path().join("hello/HelloWorld/Makefile");
+    fs::write(&mk, fs::read_to_string(&mk).unwrap().replace("#CXXFLAGS+= -DOPENR_DEBUG", "CXXFLAGS+= -DOPENR_DEBUG")).unwrap();
+    let (ok, log) = crate::support::run(std::process::Command::new("make")
+        .arg(format!("OPENRSDK_ROOT={}", crate::support::sdk_root().display()))
+        .args(["clean", "install"])
+        .current_dir(hello.dir.path().join("hello")));
+    assert!(ok, "{log}");
+    let p = build("crash");
+    fs::copy(hello.ms().join("OPEN-R/MW/OBJS/HELLO.BIN"), p.ms().join("OPEN-R/MW/OBJS/HELLO.BIN")).unwrap();
+    fs::write(p.ms().join("OPEN-R/MW/CONF/OBJECT.CFG"), "/MS/OPEN-R/MW/OBJS/HELLO.BIN\n/MS/OPEN-R/MW/OBJS/CRASH.BIN\n").unwrap();
+    fs::write(p.ms().join("OPEN-R/MW/CONF/CRASH.CFG"), "1\n").unwrap();
+    let out = run_ms(&p.ms(), &["--for", "5s"]);
+    assert_ne!(out.code, Some(0));
+    assert!(out.stdout.contains("HelloWorld::DoInit()"), "other objects' output survives the crash:\n{}", out.stdout);
+    assert!(out.stderr.contains("error: object `crash`"), "{}", out.stderr);
+}
+
 // ---- bad Memory Stick trees ----
 
 fn run_err(ms: &std::path::Path) -> String {
