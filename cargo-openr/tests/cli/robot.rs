@@ -554,3 +554,95 @@ fn imagesave_sees_the_ers7_layers_at_30_fps_and_writes_bmps() {
         assert!(bmp[54..].chunks(3).any(|px| px != first), "IMG{i}.BMP is one colour");
     }
 }
+
+fn wav_data(bytes: &[u8]) -> (u16, u32, u16, &[u8]) {
+    assert_eq!(&bytes[..4], b"RIFF");
+    assert_eq!(&bytes[8..16], b"WAVEfmt ");
+    let le16 = |o: usize| u16::from_le_bytes([bytes[o], bytes[o + 1]]);
+    let le32 = |o: usize| u32::from_le_bytes([bytes[o], bytes[o + 1], bytes[o + 2], bytes[o + 3]]);
+    assert_eq!(le16(20), 1, "PCM");
+    let mut pos = 12;
+    while pos + 8 <= bytes.len() {
+        let size = le32(pos + 4) as usize;
+        if &bytes[pos..pos + 4] == b"data" {
+            return (le16(22), le32(24), le16(34), &bytes[pos + 8..(pos + 8 + size).min(bytes.len())]);
+        }
+        pos += 8 + size + (size & 1);
+    }
+    panic!("no data chunk");
+}
+
+#[test]
+fn soundplay_streams_the_wav_gaplessly_to_the_speaker() {
+    let b = build("soundplay");
+    let ms = b.ms();
+    let played = ms.parent().unwrap().join("speaker.wav");
+    let out = run_ms(&ms, &["--for", "2s", "--speaker-wav", played.to_str().unwrap()]);
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stdout.contains("SoundPlay : design data SNDPLAY_WAV, 16044 bytes"), "{}", out.stdout);
+    assert!(out.stdout.contains("SoundPlay : 16000 Hz 16 bit 1 ch, 16000 bytes of PCM"), "{}", out.stdout);
+    assert!(out.stdout.contains("SoundPlay : mute 0 power 0 volume 0 type 0 unmute 0"), "{}", out.stdout);
+    assert!(out.stdout.contains("SoundPlay : done, 16 buffers"), "{}", out.stdout);
+    // 32 ms per buffer: the speaker starts each one 4 frames after the previous one
+    let starts: Vec<u64> = out
+        .lines_starting("SoundPlay : buffer ")
+        .iter()
+        .map(|l| l.split_whitespace().last().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(starts.len(), 16, "{}", out.stdout);
+    assert!(starts.windows(2).all(|w| w[1] - w[0] == 4), "buffer start frames {starts:?}");
+    // what the speaker played: the tone, followed by the zero padding of the last buffer
+    let tone = std::fs::read(ms.join("OPEN-R/MW/DATA/P/TONE.WAV")).unwrap();
+    let (_, _, _, tone_pcm) = wav_data(&tone);
+    let heard = std::fs::read(&played).unwrap();
+    let (channels, rate, bits, pcm) = wav_data(&heard);
+    assert_eq!((channels, rate, bits), (1, 16000, 16));
+    let at = pcm.windows(tone_pcm.len()).position(|w| w == tone_pcm).expect("the tone is in the speaker output");
+    assert!(pcm[at + tone_pcm.len()..].iter().all(|&x| x == 0), "only silence after the tone");
+}
+
+#[test]
+fn soundrec_records_the_microphone_into_a_wav() {
+    let b = build("soundrec");
+    let ms = b.ms();
+    // two seconds of stereo test signal (300 Hz left, 500 Hz right) for the microphones
+    let rate = 16000u32;
+    let mut pcm = Vec::new();
+    for i in 0..rate * 2 {
+        let t = i as f64 / rate as f64;
+        pcm.extend_from_slice(&((6000.0 * (2.0 * std::f64::consts::PI * 300.0 * t).sin()) as i16).to_le_bytes());
+        pcm.extend_from_slice(&((3000.0 * (2.0 * std::f64::consts::PI * 500.0 * t).sin()) as i16).to_le_bytes());
+    }
+    let mut wav = Vec::new();
+    wav.extend_from_slice(b"RIFF");
+    wav.extend_from_slice(&(36 + pcm.len() as u32).to_le_bytes());
+    wav.extend_from_slice(b"WAVEfmt ");
+    for v in [16u32.to_le_bytes().to_vec(), 1u16.to_le_bytes().to_vec(), 2u16.to_le_bytes().to_vec(), rate.to_le_bytes().to_vec(),
+        (rate * 4).to_le_bytes().to_vec(), 4u16.to_le_bytes().to_vec(), 16u16.to_le_bytes().to_vec()]
+    {
+        wav.extend_from_slice(&v);
+    }
+    wav.extend_from_slice(b"data");
+    wav.extend_from_slice(&(pcm.len() as u32).to_le_bytes());
+    wav.extend_from_slice(&pcm);
+    let mic = ms.parent().unwrap().join("mic.wav");
+    std::fs::write(&mic, &wav).unwrap();
+
+    let out = run_ms(&ms, &["--for", "2s", "--mic-wav", mic.to_str().unwrap()]);
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stdout.contains("SoundRec : saved /MS/RECORD.WAV, 64000 bytes in 63 blocks"), "{}", out.stdout);
+    // ERS-7 mic: 16 ms blocks (2 frames) of 1024 bytes, 16 kHz 16-bit stereo
+    let blocks: Vec<Vec<String>> =
+        out.lines_starting("SoundRec : block ").iter().map(|l| l.split_whitespace().map(str::to_string).collect()).collect();
+    assert_eq!(blocks.len(), 5, "{}", out.stdout);
+    for b in &blocks {
+        assert_eq!(&b[6..], ["rate", "16000", "bits", "16", "ch", "2", "size", "1024", "id", "mic"], "{b:?}");
+    }
+    let frames: Vec<u64> = blocks.iter().map(|b| b[5].parse().unwrap()).collect();
+    assert!(frames.windows(2).all(|w| w[1] - w[0] == 2), "block frames {frames:?}");
+    let rec = std::fs::read(ms.join("RECORD.WAV")).expect("RECORD.WAV written on the stick");
+    let (channels, r, bits, data) = wav_data(&rec);
+    assert_eq!((channels, r, bits, data.len()), (2, 16000, 16, 64000));
+    // the recording is a piece of the microphone signal
+    assert!(pcm.windows(1024).any(|w| w == &data[..1024]), "recorded samples are not the mic input");
+}
