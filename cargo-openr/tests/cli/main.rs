@@ -1,4 +1,5 @@
 //! Integration tests of the `cargo-openr` binary: one test binary, a module per area.
+mod audio;
 mod clock;
 mod corpus;
 mod net;
