@@ -3,7 +3,7 @@
 # everything is already there). Used by the README commands and by CI.
 set -euo pipefail
 need=()
-for pkg_cmd in g++:g++ gcc:gcc make:make binutils:ar gzip:gzip; do
+for pkg_cmd in g++:g++ gcc:gcc make:make binutils:ar gzip:gzip python3:python3; do
   pkg=${pkg_cmd%%:*}; cmd=${pkg_cmd##*:}
   command -v "$cmd" >/dev/null 2>&1 || need+=("$pkg")
 done
