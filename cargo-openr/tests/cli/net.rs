@@ -206,3 +206,173 @@ fn bad_input_gets_the_error_codes_of_the_spec() {
     assert!(out.stdout.contains("NetErrors : done"));
     assert_eq!(out.code, Some(0), "{}", out.stderr);
 }
+
+#[test]
+fn tcp_client_talks_to_a_host_echo_server() {
+    let built = build("tcp-client");
+    let ms = built.ms();
+    let server = TcpListener::bind("127.0.0.1:0").unwrap();
+    std::fs::write(ms.join("OPEN-R/MW/CONF/ECHOCLNT.CFG"), format!("127.0.0.1 {}\n", server.local_addr().unwrap().port())).unwrap();
+    let echo = std::thread::spawn(move || {
+        let (mut s, _) = server.accept().unwrap();
+        s.set_read_timeout(Some(Duration::from_secs(20))).unwrap();
+        let mut records = Vec::new();
+        for _ in 0..3 {
+            let rec = read_exact_n(&mut s, 25);
+            s.write_all(&rec).unwrap();
+            records.push(rec);
+        }
+        records // then close: the client closes too
+    });
+    let out = run_ms(&ms, &["--for", "4s"]);
+    for rec in echo.join().unwrap() {
+        assert_eq!(rec, b"This is a test message.\n\0");
+    }
+    assert!(out.stdout.contains("EchoClient : round 3 : 25 bytes : This is a test message."), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stdout.contains("EchoClient : receive error 2\nEchoClient : closed\n"), "{}", out.stdout);
+    assert_eq!(out.code, Some(0));
+
+    // nobody listening: reported once, no retry
+    let closed = TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
+    std::fs::write(ms.join("OPEN-R/MW/CONF/ECHOCLNT.CFG"), format!("127.0.0.1 {closed}\n")).unwrap();
+    let out = run_ms(&ms, &["--for", "1s"]);
+    assert_eq!(count(&out.stdout, "EchoClient : connect error 8"), 1, "TCP_PORT_UNREACHABLE:\n{}", out.stdout);
+}
+
+/// A tiny DNS server for the robot: A records, one CNAME, the PTR of 127.0.0.1.
+fn dns_server() -> (u16, std::thread::JoinHandle<usize>) {
+    let sock = UdpSocket::bind("127.0.0.1:0").unwrap();
+    sock.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    let port = sock.local_addr().unwrap().port();
+    let handle = std::thread::spawn(move || {
+        let mut queries = 0;
+        let mut buf = [0u8; 512];
+        while let Ok((n, from)) = sock.recv_from(&mut buf) {
+            queries += 1;
+            let q = &buf[..n];
+            // question name
+            let (mut labels, mut pos) = (Vec::new(), 12);
+            while q[pos] != 0 {
+                let l = q[pos] as usize;
+                labels.push(String::from_utf8_lossy(&q[pos + 1..pos + 1 + l]).into_owned());
+                pos += 1 + l;
+            }
+            let qname = labels.join(".");
+            let qtype = u16::from_be_bytes([q[pos + 1], q[pos + 2]]);
+            let question = &q[12..pos + 5];
+            let encode = |name: &str| {
+                let mut v = Vec::new();
+                for l in name.split('.') {
+                    v.push(l.len() as u8);
+                    v.extend_from_slice(l.as_bytes());
+                }
+                v.push(0);
+                v
+            };
+            let rr = |name: &str, rtype: u16, rdata: &[u8]| {
+                let mut v = encode(name);
+                v.extend_from_slice(&rtype.to_be_bytes());
+                v.extend_from_slice(&[0, 1, 0, 0, 0, 60]);
+                v.extend_from_slice(&(rdata.len() as u16).to_be_bytes());
+                v.extend_from_slice(rdata);
+                v
+            };
+            let answers: Vec<Vec<u8>> = match (qtype, qname.as_str()) {
+                (1, "robot.aibo.test") => vec![rr(&qname, 1, &[10, 0, 1, 7])],
+                (1, "www.aibo.test") => vec![rr(&qname, 5, &encode("robot.aibo.test")), rr("robot.aibo.test", 1, &[10, 0, 1, 7])],
+                (1, "localhost") => vec![rr(&qname, 1, &[127, 0, 0, 1])],
+                (12, "1.0.0.127.in-addr.arpa") => vec![rr(&qname, 12, &encode("localhost"))],
+                _ => vec![],
+            };
+            let mut r = vec![q[0], q[1], 0x81, if answers.is_empty() { 0x83 } else { 0x80 }, 0, 1, 0, answers.len() as u8, 0, 0, 0, 0];
+            r.extend_from_slice(question);
+            for a in answers {
+                r.extend_from_slice(&a);
+            }
+            sock.send_to(&r, from).unwrap();
+        }
+        queries
+    });
+    (port, handle)
+}
+
+#[test]
+fn interactive_dns_resolver() {
+    let built = build("dns-lookup");
+    let ms = built.ms();
+    std::fs::create_dir_all(ms.join("OPEN-R/SYSTEM/CONF")).unwrap();
+    std::fs::write(ms.join("OPEN-R/SYSTEM/CONF/WLANCONF.TXT"), "ETHER_IP=10.0.1.100\nDNS_SERVER_1=127.0.0.1\nDNS_DEFDNAME=aibo.test\n").unwrap();
+    let (port, server) = dns_server();
+    let map = format!("53={port}");
+    let mut r = spawn_ms(&ms, &[], &[("OPENR_NET_PORT_MAP", &map)]);
+    started(&mut r, "DNSLookUp> ");
+    r.write_stdin("robot\n");
+    started(&mut r, "Address : 10.0.1.7");
+    r.write_stdin("www.aibo.test\n");
+    assert!(r.wait_for("Name    : robot.aibo.test\nAddress : 10.0.1.7\nDNSLookUp> Name    : robot.aibo.test", T), "{}", r.stdout());
+    r.write_stdin("no-such-host.invalid\n");
+    started(&mut r, "no-such-host.invalid. Non-existent host/domain");
+    r.write_stdin("localhost\n");
+    started(&mut r, "Name    : localhost\nAddress : 127.0.0.1");
+    r.write_stdin("shutdown\n");
+    let out = r.wait(T);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    assert!(out.stdout.contains("Default Server : localhost\nAddress        : 127.0.0.1\nDefault domain : aibo.test\n"), "{}", out.stdout);
+    assert!(out.stdout.contains("SHUTDOWN ..."));
+    assert!(out.stderr.contains(&format!("net: robot port 53 (DNS server) is host port {port}")), "{}", out.stderr);
+    drop(server); // ends at its read timeout
+}
+
+#[test]
+fn sntp_client_sets_the_clock() {
+    let built = build("sntp");
+    let ms = built.ms();
+    let server = UdpSocket::bind("127.0.0.1:0").unwrap();
+    server.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    let port = server.local_addr().unwrap().port();
+    // 2000-01-01 + 800 000 000 s = 2025-05-09 14:13:20 UTC
+    let t: u32 = 3_155_673_600u32.wrapping_add(800_000_000);
+    let sntp = std::thread::spawn(move || {
+        let mut buf = [0u8; 512];
+        let (n, from) = server.recv_from(&mut buf).unwrap();
+        let request = buf[..n].to_vec();
+        let mut reply = [0u8; 48];
+        reply[0] = 0x0c; // server, version 1
+        reply[40..44].copy_from_slice(&t.to_be_bytes());
+        server.send_to(&reply, from).unwrap();
+        request
+    });
+    let map = format!("123={port}");
+    let mut r = spawn_ms(&ms, &[], &[("OPENR_NET_PORT_MAP", &map)]);
+    started(&mut r, "NTP : clock set to");
+    let out = r.stop();
+    let request = sntp.join().unwrap();
+    assert_eq!(request.len(), 48);
+    assert_eq!(request[0], 0x0b);
+    assert!(request[1..].iter().all(|&b| b == 0));
+    assert!(out.stdout.contains("NTP : looking up localhost.\n"), "{}", out.stdout);
+    let line = out.lines_starting("NTP : clock set to").join("");
+    assert!(line.contains("May 2025"), "{line}");
+    assert!(out.stderr.contains(&format!("net: robot port 123 (UDP send) is host port {port}")), "{}", out.stderr);
+}
+
+#[test]
+fn wireless_lan_information() {
+    let built = build("wlan-info");
+    let out = run_ms(&built.ms(), &["--for", "1s", "--port-offset", "7"]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let expected = "[MAC Address] 02:00:00:00:00:07\n[Ether Statistics]\n  carrierSenseErrorCount  : 0\n";
+    assert!(out.stdout.contains(expected), "{}", out.stdout);
+    for line in [
+        "  mode          : ADHOC\n",
+        "  essid         : AIBONET\n",
+        "  stationName   : AIBO7\n",
+        "  channel       : 11\n",
+        "  encryption    : OFF\n",
+        "  rate          : 11MB\n",
+        "[WLAN Statistics]\n  link             : 100\n",
+        "[ETHER_IP] 10.0.1.100\n",
+    ] {
+        assert!(out.stdout.contains(line), "missing {line:?}:\n{}", out.stdout);
+    }
+}

@@ -193,22 +193,30 @@ pub fn lookup_name(servers: &[(u32, u16)], domain: Option<&str>, name: &str) -> 
     if servers.is_empty() {
         return host_lookup_name(name);
     }
-    let qname = match domain {
-        Some(d) if !name.contains('.') && !d.is_empty() => format!("{name}.{}", d.trim_end_matches('.')),
-        _ => name.to_string(),
-    };
-    let (server, answer) = query_servers(servers, &qname, 1)?;
-    if answer.addrs.is_empty() {
-        return Err((code::NO_DATA, server));
+    // a name without a dot is tried with the default domain first, then alone
+    let mut candidates = Vec::new();
+    if let Some(d) = domain.filter(|d| !name.contains('.') && !d.is_empty()) {
+        candidates.push(format!("{name}.{}", d.trim_end_matches('.')));
     }
-    // official name = the end of the CNAME chain; the others are aliases
-    let mut names = vec![answer.cname.clone().unwrap_or_else(|| qname.clone())];
-    if answer.cname.is_some() {
-        names.push(qname);
+    candidates.push(name.to_string());
+    let mut last = Err((code::HOST_NOT_FOUND, first));
+    for qname in candidates {
+        last = match query_servers(servers, &qname, 1) {
+            Ok((server, answer)) if answer.addrs.is_empty() => Err((code::NO_DATA, server)),
+            Ok((server, answer)) => {
+                // official name = the end of the CNAME chain; the others are aliases
+                let mut names = vec![answer.cname.clone().unwrap_or_else(|| qname.clone())];
+                if answer.cname.is_some() {
+                    names.push(qname);
+                }
+                let mut addrs = answer.addrs;
+                addrs.dedup();
+                return Ok(HostEntry { names, addrs, server });
+            }
+            Err(e) => Err(e),
+        };
     }
-    let mut addrs = answer.addrs;
-    addrs.dedup();
-    Ok(HostEntry { names, addrs, server })
+    last
 }
 
 /// Reverse lookup.
