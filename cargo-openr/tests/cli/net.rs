@@ -376,3 +376,85 @@ fn wireless_lan_information() {
         assert!(out.stdout.contains(line), "missing {line:?}:\n{}", out.stdout);
     }
 }
+
+/// Python's ftplib against the FTP server: passive (the 227 text carries the robot's
+/// port, the client adds the offset) and active (the server connects from port 20).
+const FTP_CLIENT: &str = r#"
+import ftplib, io, sys
+OFF = int(sys.argv[1])
+class F(ftplib.FTP):
+    def makepasv(self):
+        h, p = super().makepasv()
+        return h, p + OFF
+f = F()
+f.connect('127.0.0.1', 10021 + OFF, timeout=20)
+print(f.getwelcome())
+print(f.login('anonymous', 'anonymous'))
+print(f.pwd())
+print(f.sendcmd('SYST'))
+buf = io.BytesIO()
+print(f.retrbinary('RETR readme.txt', buf.write))
+print('RETR', buf.getvalue())
+lines = []
+print(f.retrlines('LIST', lines.append))
+print('LIST', ' | '.join(sorted(lines)))
+f.set_pasv(False)
+data = bytes(range(256)) * 100
+print(f.storbinary('STOR test.bin', io.BytesIO(data)))
+buf = io.BytesIO()
+print(f.retrbinary('RETR TEST.BIN', buf.write))
+print('same', buf.getvalue() == data)
+try:
+    f.retrbinary('RETR nothing.txt', buf.write)
+except ftplib.error_perm as e:
+    print('missing', e)
+print(f.quit())
+g = F()
+g.connect('127.0.0.1', 10021 + OFF, timeout=20)
+print(g.login('guest', 'whatever'))
+print(g.pwd())
+try:
+    g.cwd('/MS')
+except ftplib.error_perm as e:
+    print('above home', e)
+try:
+    g.login('anonymous', 'wrong')
+except ftplib.error_perm as e:
+    print('bad password', e)
+print(g.quit())
+"#;
+
+#[test]
+fn ftp_server_serves_the_memory_stick() {
+    let built = build("ftpd");
+    let ms = built.ms();
+    let mut r = spawn_ms(&ms, &["--port-offset", "150"], &[]);
+    started(&mut r, "FtpServer : listening on port 21");
+    let out = std::process::Command::new("python3").arg("-c").arg(FTP_CLIENT).arg("150").output().expect("python3");
+    let client = String::from_utf8_lossy(&out.stdout).into_owned();
+    let run = r.stop();
+    assert!(out.status.success(), "ftplib failed:\n{client}\n{}\nserver:\n{}\n{}", String::from_utf8_lossy(&out.stderr), run.stdout, run.stderr);
+    for line in [
+        "220 AIBO FTP Server ready\n",
+        "230 User anonymous logged in.\n",
+        "/MS/\n",
+        "215 Aperios system type.\n",
+        "RETR b'Hello from the Memory Stick.\\n'\n",
+        "-rw-rw-rw- 0 AIBO AIBO 29 May 11 1999 README.TXT",
+        "drwxrwxrwx 0 AIBO AIBO",
+        "same True\n",
+        "missing 550 No such file.\n",
+        "221 Goodbye. Thanks for using the AIBO FTP Server.\n",
+        "230 User guest logged in.\n/MS/OPEN-R/MW/\n",
+        "above home 550 No such directory.\n",
+        "bad password 530 Login incorrect.\n",
+    ] {
+        assert!(client.contains(line), "missing {line:?} in:\n{client}");
+    }
+    assert_eq!(count(&client, "226 Transfer complete."), 4, "{client}");
+    let stored = std::fs::read(ms.join("TEST.BIN")).expect("STOR test.bin made /MS/TEST.BIN");
+    assert_eq!(stored.len(), 25600);
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    assert!(run.stderr.contains("net: robot port 21 (TCP listen) is host port 10171"), "{}", run.stderr);
+    assert!(run.stderr.contains("net: robot port 20 (TCP connect source) is host port 10170"), "{}", run.stderr);
+}
