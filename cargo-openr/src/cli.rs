@@ -21,6 +21,18 @@ pub enum Command {
     Run(commands::run::Args),
     /// Measure the runtime (message round trip, throughput, cold start) against the machine's limit
     Bench(commands::bench::Args),
+    /// Create a new OPEN-R project (objects, Makefiles, MS/ tree) from a template
+    New(commands::new::Args),
+    /// Lint a project: 8.3 names, OBJECT.CFG objects, CONNECT.CFG wiring, stub.cfg, .ocf
+    Check(commands::check::Args),
+    /// Memory Stick tree tools (`ms verify`)
+    Ms(commands::ms::Args),
+    /// Check the host: compilers, make, binutils, gdb, Python/MuJoCo, GL, the SDK root
+    Doctor(commands::doctor::Args),
+    /// Print the build environment (SDK root, wrappers, flags, include dirs, libraries)
+    Env(commands::env::Args),
+    /// Print the resolved configuration and where each value came from
+    Config(commands::config::Args),
 }
 
 pub fn run(args: Vec<OsString>, shell: &mut Shell) -> anyhow::Result<()> {
@@ -29,6 +41,12 @@ pub fn run(args: Vec<OsString>, shell: &mut Shell) -> anyhow::Result<()> {
         Command::Sdk(a) => commands::sdk::exec(a, shell),
         Command::Run(a) => commands::run::exec(a, shell),
         Command::Bench(a) => commands::bench::exec(a, shell),
+        Command::New(a) => commands::new::exec(a, shell),
+        Command::Check(a) => commands::check::exec(a, shell),
+        Command::Ms(a) => commands::ms::exec(a, shell),
+        Command::Doctor(a) => commands::doctor::exec(a, shell),
+        Command::Env(a) => commands::env::exec(a, shell),
+        Command::Config(a) => commands::config::exec(a, shell),
     }
 }
 

@@ -27,6 +27,23 @@ impl Shell {
         let _ = writeln!(std::io::stderr(), "error: {msg}");
     }
 
+    pub fn warn(&mut self, msg: &str) {
+        if !self.quiet {
+            let _ = writeln!(std::io::stderr(), "warning: {msg}");
+        }
+    }
+
+    /// A lint finding: rustc's human format on stderr, or one JSON line on stdout.
+    pub fn diagnostic(&mut self, d: &crate::ops::diag::Diagnostic, format: crate::ops::diag::MessageFormat) {
+        let text = crate::ops::diag::render(d, format);
+        match format {
+            crate::ops::diag::MessageFormat::Json => self.out(&text),
+            crate::ops::diag::MessageFormat::Human => {
+                let _ = writeln!(std::io::stderr(), "{text}\n");
+            }
+        }
+    }
+
     /// A result line on stdout (paths, JSON).
     pub fn out(&mut self, line: &str) {
         let _ = writeln!(std::io::stdout(), "{line}");

@@ -40,6 +40,17 @@ pub(crate) fn host_flags(lang: Lang, user: &[OsString]) -> Vec<&'static str> {
     flags
 }
 
+/// The flags `mipsel-linux-g++` adds in front of the user's (when the user gives no
+/// `-std=`), for IDEs and other build systems (`cargo openr env`).
+pub fn cxx_flags() -> Vec<&'static str> {
+    host_flags(Lang::Cxx, &[])
+}
+
+/// The flags `mipsel-linux-gcc` adds in front of the user's (when the user gives no `-std=`).
+pub fn cc_flags() -> Vec<&'static str> {
+    host_flags(Lang::C, &[])
+}
+
 pub(crate) fn run(lang: Lang, args: Vec<OsString>) -> Result<i32, Error> {
     let (env, default) = match lang {
         Lang::Cxx => ("OPENR_HOST_CXX", "g++"),

@@ -86,6 +86,17 @@ pub fn install(prefix: &Path, exe: &Path) -> Result<Outcome, Error> {
     result.map(|()| Outcome::Installed)
 }
 
+/// Whether `prefix` holds an SDK root that `install(prefix, exe)` would leave untouched
+/// (checked without writing anything; `cargo openr doctor`).
+pub fn is_up_to_date(prefix: &Path, exe: &Path) -> bool {
+    let old = fs::read_to_string(prefix.join(STAMP)).unwrap_or_default();
+    let meta = exe_fingerprint(exe);
+    if meta.is_some() && old.lines().nth(1) == meta.as_deref() {
+        return true;
+    }
+    fs::read(exe).is_ok_and(|bytes| old.lines().next() == Some(payload_hash(&bytes).as_str()))
+}
+
 /// `len:mtime` of the executable.
 fn exe_fingerprint(exe: &Path) -> Option<String> {
     let m = fs::metadata(exe).ok()?;

@@ -24,6 +24,7 @@ mod root;
 use std::ffi::OsString;
 use std::path::Path;
 
+pub use compile::{cc_flags, cxx_flags, host_tool};
 pub use error::{Error, ErrorKind};
 pub use root::root_from_exe;
 

@@ -224,9 +224,15 @@ pub fn check_entry_symbols(path: &Path) -> Result<(), Error> {
 
 /// The names of `wanted` that `path` does not define in its dynamic symbol table.
 pub fn missing_dynamic_symbols(path: &Path, wanted: &[&str]) -> Result<Vec<String>, Error> {
-    use object::{Object, ObjectSymbol};
     let data = fs::read(path).map_err(|e| Error::io(path, e))?;
-    let file = object::File::parse(&*data).map_err(|e| ErrorKind::BadObject {
+    missing_dynamic_symbols_in(path, &data, wanted)
+}
+
+/// Same as [`missing_dynamic_symbols`] for an ELF image already in memory (a `.BIN`
+/// unzipped); `path` names it in errors.
+pub fn missing_dynamic_symbols_in(path: &Path, data: &[u8], wanted: &[&str]) -> Result<Vec<String>, Error> {
+    use object::{Object, ObjectSymbol};
+    let file = object::File::parse(data).map_err(|e| ErrorKind::BadObject {
         path: path.to_path_buf(),
         message: format!("not an ELF shared object: {e}"),
     })?;

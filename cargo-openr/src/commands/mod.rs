@@ -1,3 +1,9 @@
 pub mod bench;
+pub mod check;
+pub mod config;
+pub mod doctor;
+pub mod env;
+pub mod ms;
+pub mod new;
 pub mod run;
 pub mod sdk;

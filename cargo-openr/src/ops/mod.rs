@@ -1,2 +1,8 @@
 //! Operations behind the subcommands that are not library calls of their own.
 pub mod bench;
+pub mod check;
+pub mod config;
+pub mod diag;
+pub mod doctor;
+pub mod env;
+pub mod new;

@@ -1,0 +1,27 @@
+//! `cargo openr new <name> [--template hello|subject-observer|walk] [--path DIR]`
+use std::path::PathBuf;
+
+use crate::ops::new::{self, NewOptions};
+use crate::shell::Shell;
+
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Project name: letters, digits, `-`, `_`; gives the object classes (`my-dog` → MyDog) and .BIN names (MYDOG.BIN)
+    name: String,
+    /// Project template
+    #[arg(long, default_value = "hello", value_parser = clap::builder::PossibleValuesParser::new(["hello", "subject-observer", "walk"]))]
+    template: String,
+    /// Directory to create (default: ./<name>); must not exist or be empty
+    #[arg(long, value_name = "DIR")]
+    path: Option<PathBuf>,
+}
+
+pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
+    let path = args.path.unwrap_or_else(|| PathBuf::from(&args.name));
+    let opts = NewOptions { name: args.name, template: args.template, path };
+    let created = new::new(&opts)?;
+    let objs: Vec<String> = created.objects.iter().map(|o| format!("{} ({})", o.class, o.bin)).collect();
+    shell.status("Created", &format!("`{}` OPEN-R project at {} ({} files): {}", opts.template, created.dir.display(), created.files.len(), objs.join(", ")));
+    shell.out(&created.dir.display().to_string());
+    Ok(())
+}

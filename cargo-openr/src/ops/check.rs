@@ -1,0 +1,416 @@
+//! `cargo openr check` and `cargo openr ms verify`: lint the wiring that causes most AIBO
+//! failures before anything boots — 8.3 names, OBJECT.CFG entries that are not loadable
+//! objects, CONNECT.CFG lines naming services nobody registers, in the wrong order, with
+//! different DataNames or listed twice, stub.cfg files stubgen2 rejects, bad `.ocf`s.
+//!
+//! Where the services come from:
+//! * in a project (`check`), from its `stub.cfg` files, parsed by the `stubgen` crate;
+//! * in a bare Memory Stick tree (`ms verify`), and for objects with hand-written stubs,
+//!   from the objects themselves: stubgen2 writes the service names into `def.h` as
+//!   string literals, so every 4-part name ending `.S` or `.O` in an object's read-only
+//!   data is taken as one of its services. An object that builds names at run time
+//!   escapes this heuristic (its connections are then reported as unknown services).
+//!
+//! The system services of `OVirtualRobotComm` and `OVirtualRobotAudioComm` are known.
+use std::collections::{BTreeMap, HashSet};
+use std::path::{Path, PathBuf};
+
+use sdk_runtime::cfg::{lines_for_design, CfgFile};
+use sdk_runtime::ms::MsDir;
+
+use crate::ops::diag::{Diagnostic, Report};
+
+/// The services the system objects register (object-model 1.4).
+pub const SYSTEM_SERVICES: &[&str] = &[
+    "OVirtualRobotComm.Effector.OCommandVectorData.O",
+    "OVirtualRobotComm.Sensor.OSensorFrameVectorData.S",
+    "OVirtualRobotComm.FbkImageSensor.OFbkImageVectorData.S",
+    "OVirtualRobotAudioComm.Speaker.OSoundVectorData.O",
+    "OVirtualRobotAudioComm.Mic.OSoundVectorData.S",
+];
+
+/// DataName of the dummy services stubgen2 forces on objects that need none.
+const DO_NOT_CONNECT: &str = "DoNotConnect";
+
+/// What to lint.
+#[derive(Debug, Clone)]
+pub struct CheckOptions {
+    /// The Memory Stick directory (holds `OPEN-R/`).
+    pub ms: PathBuf,
+    /// `stub.cfg` files giving the services (empty: take them from the objects).
+    pub stubs: Vec<PathBuf>,
+    /// `.ocf` files to check.
+    pub ocfs: Vec<PathBuf>,
+    /// Robot design whose CFG sections apply.
+    pub design: String,
+}
+
+/// Finds what `check` lints in the project at `dir`: its `MS/` tree, every `stub.cfg` and
+/// `.ocf` outside it (hidden directories and `target/` skipped).
+pub fn project_inputs(dir: &Path, design: &str) -> anyhow::Result<CheckOptions> {
+    let ms = dir.join("MS");
+    if !ms.join("OPEN-R").is_dir() {
+        anyhow::bail!(
+            "`{}` is not an OPEN-R project: no MS/OPEN-R directory (for a bare Memory Stick tree use `cargo openr ms verify`)",
+            dir.display()
+        );
+    }
+    let mut stubs = Vec::new();
+    let mut ocfs = Vec::new();
+    collect_sources(dir, &ms, &mut stubs, &mut ocfs, 0);
+    stubs.sort();
+    ocfs.sort();
+    Ok(CheckOptions { ms, stubs, ocfs, design: design.to_string() })
+}
+
+fn collect_sources(dir: &Path, ms: &Path, stubs: &mut Vec<PathBuf>, ocfs: &mut Vec<PathBuf>, depth: usize) {
+    let Ok(rd) = std::fs::read_dir(dir) else { return };
+    for e in rd.flatten() {
+        let path = e.path();
+        let name = e.file_name().to_string_lossy().into_owned();
+        if name.starts_with('.') || path == ms {
+            continue;
+        }
+        let Ok(ft) = e.file_type() else { continue };
+        if ft.is_dir() {
+            if depth < 8 && name != "target" {
+                collect_sources(&path, ms, stubs, ocfs, depth + 1);
+            }
+        } else if name == "stub.cfg" {
+            stubs.push(path);
+        } else if name.ends_with(".ocf") {
+            ocfs.push(path);
+        }
+    }
+}
+
+/// Where a service was found.
+#[derive(Debug, Clone)]
+struct Origin {
+    file: PathBuf,
+    line: Option<usize>,
+}
+
+/// Lints a Memory Stick tree (and the sources given with it).
+pub fn check(opts: &CheckOptions) -> anyhow::Result<Report> {
+    let mut report = Report::default();
+    let ms = MsDir::new(&opts.ms).map_err(|e| anyhow::anyhow!("cannot open the Memory Stick tree `{}`: {e}", opts.ms.display()))?;
+    // Paths in diagnostics are shown under the directory as the user named it.
+    let shown = |p: &Path| -> PathBuf { p.strip_prefix(ms.root()).map_or_else(|_| p.to_path_buf(), |rel| opts.ms.join(rel)) };
+    let Some(open_r) = ms.existing("/MS/OPEN-R") else {
+        anyhow::bail!("`{}` is not a Memory Stick tree: no OPEN-R directory", opts.ms.display());
+    };
+    check_names(&open_r, &shown, &mut report);
+
+    let mut services: BTreeMap<String, Origin> = BTreeMap::new();
+    for stub in &opts.stubs {
+        match stubgen::parse_files(std::slice::from_ref(stub)) {
+            Ok(cfg) => {
+                for s in cfg.subjects.iter().chain(&cfg.observers) {
+                    services.entry(s.name.clone()).or_insert(Origin { file: s.file.clone(), line: Some(s.line) });
+                }
+            }
+            Err(e) => {
+                let file = e.file().map_or_else(|| stub.clone(), Path::to_path_buf);
+                report.push(
+                    Diagnostic::error("E0008", format!("stub.cfg rejected by stubgen2: {}", e.message()))
+                        .at(file, e.line())
+                        .help("NumOfOSubject / NumOfOObserver must equal the number of `Service : \"Obj.Sub.Data.S|O\", …` lines of each kind (at least one each)"),
+                );
+            }
+        }
+    }
+    for ocf in &opts.ocfs {
+        if let Err(e) = openr_wrappers::ocf::read(ocf) {
+            let d = match e.kind() {
+                openr_wrappers::ErrorKind::Ocf { path, line, message } => Diagnostic::error("E0009", format!("malformed .ocf: {message}")).at(path, Some(*line)),
+                _ => Diagnostic::error("E0009", format!("unreadable .ocf: {e}")).at(ocf, None),
+            };
+            report.push(d.help("the form is `object NAME STACK HEAP PRIO CACHE TLB MODE`, e.g. `object myObject 3072 16384 128 cache tlb user`"));
+        }
+    }
+
+    for (bin, found) in check_objects(&ms, &opts.design, &shown, &mut report) {
+        for name in found {
+            services.entry(name).or_insert(Origin { file: bin.clone(), line: None });
+        }
+    }
+    check_connections(&ms, &opts.design, &services, &shown, &mut report);
+    Ok(report)
+}
+
+/// FAT 8.3: a base of 1–8 characters, an optional extension of 1–3, allowed characters
+/// only (object-model 1.5). Case is not checked here.
+pub fn is_8_3(name: &str) -> bool {
+    const SPECIAL: &str = "$&#{}~%'()-@^`!_";
+    let ok = |s: &str, max: usize| (1..=max).contains(&s.len()) && s.chars().all(|c| c.is_ascii_alphanumeric() || SPECIAL.contains(c));
+    match name.split_once('.') {
+        Some((base, ext)) => ok(base, 8) && ok(ext, 3),
+        None => ok(name, 8),
+    }
+}
+
+/// Every name under `MS/OPEN-R` (dot files, host-only placeholders such as `.keep`, are
+/// skipped).
+fn check_names(dir: &Path, shown: &dyn Fn(&Path) -> PathBuf, report: &mut Report) {
+    let Ok(rd) = std::fs::read_dir(dir) else { return };
+    let mut entries: Vec<_> = rd.flatten().collect();
+    entries.sort_by_key(|e| e.file_name());
+    for e in entries {
+        let name = e.file_name().to_string_lossy().into_owned();
+        if name.starts_with('.') {
+            continue;
+        }
+        let path = e.path();
+        if !is_8_3(&name) {
+            report.push(
+                Diagnostic::error("E0001", format!("`{name}` is not an 8.3 file name"))
+                    .at(shown(&path), None)
+                    .help("names on the Memory Stick are FAT 8.3: at most 8 characters, optionally `.` and at most 3 (letters, digits, $&#{}~%'()-@^`!_)"),
+            );
+        } else if name.chars().any(|c| c.is_ascii_lowercase()) {
+            report.push(
+                Diagnostic::warning("W0001", format!("`{name}` has lower-case letters"))
+                    .at(shown(&path), None)
+                    .help(format!("FAT stores names upper case; call it `{}`", name.to_ascii_uppercase())),
+            );
+        }
+        if e.file_type().is_ok_and(|t| t.is_dir()) {
+            check_names(&path, shown, report);
+        }
+    }
+}
+
+/// OBJECT.CFG: every entry exists and is a loadable object. Returns, per loadable
+/// object, the service names found in its read-only data.
+fn check_objects(ms: &MsDir, design: &str, shown: &dyn Fn(&Path) -> PathBuf, report: &mut Report) -> Vec<(PathBuf, Vec<String>)> {
+    let cfg = match CfgFile::find(ms, "OBJECT.CFG") {
+        Ok(Some(cfg)) => cfg,
+        Ok(None) => {
+            report.push(
+                Diagnostic::error("E0002", "OBJECT.CFG not found")
+                    .at(shown(&ms.root().join("OPEN-R/MW/CONF/OBJECT.CFG")), None)
+                    .help("list the objects to load, one `/MS/OPEN-R/MW/OBJS/NAME.BIN` a line"),
+            );
+            return Vec::new();
+        }
+        Err(e) => {
+            report.push(Diagnostic::error("E0002", e.to_string()));
+            return Vec::new();
+        }
+    };
+    let file = shown(&cfg.path);
+    let mut out = Vec::new();
+    let lines = lines_for_design(&cfg.text, design);
+    if lines.is_empty() {
+        report.push(Diagnostic::error("E0002", format!("OBJECT.CFG lists no object for robot design {design}")).at(&file, None));
+    }
+    for line in lines {
+        let ms_path = &line.fields[0];
+        if line.fields.len() > 1 {
+            report.push(
+                Diagnostic::error("E0002", format!("expected one path per line, found `{}`", line.fields.join(" ")))
+                    .at(&file, Some(line.number))
+                    .help("one absolute path a line: /MS/OPEN-R/MW/OBJS/NAME.BIN"),
+            );
+            continue;
+        }
+        let Some(host) = ms.existing(ms_path).filter(|p| p.is_file()) else {
+            report.push(
+                Diagnostic::error("E0002", format!("object `{ms_path}` not found on the Memory Stick"))
+                    .at(&file, Some(line.number))
+                    .help("build and install it (`make OPENRSDK_ROOT=… install`), or fix the path (absolute, starting with /MS/)"),
+            );
+            continue;
+        };
+        let elf = match sdk_runtime::loader::read_bin(&host) {
+            Ok(elf) => elf,
+            Err(e) => {
+                report.push(
+                    Diagnostic::error("E0003", format!("`{ms_path}` is not a loadable object: {e}"))
+                        .at(&file, Some(line.number))
+                        .help("install the output of mkbin (`gzip -c x.bin > …` or gzcp)"),
+                );
+                continue;
+            }
+        };
+        if let Some(problem) = object_problem(&host, &elf) {
+            report.push(
+                Diagnostic::error("E0003", format!("`{ms_path}` is not a loadable object: {problem}"))
+                    .at(&file, Some(line.number))
+                    .help("build it with the SDK root's mkbin from a stub (stubgen2 output or a hand-written stub)"),
+            );
+            continue;
+        }
+        out.push((shown(&host), services_in_rodata(&elf)));
+    }
+    out
+}
+
+/// Why an ELF image is not an object the runtime can load, if it is not.
+fn object_problem(path: &Path, elf: &[u8]) -> Option<String> {
+    use object::Object;
+    let file = match object::File::parse(elf) {
+        Ok(f) => f,
+        Err(e) => return Some(format!("not an ELF file: {e}")),
+    };
+    if file.architecture() != object::Architecture::X86_64 {
+        return Some(format!("built for {:?}, not x86-64 (was it built with the host SDK root?)", file.architecture()));
+    }
+    if file.kind() != object::ObjectKind::Dynamic {
+        return Some(format!("an ELF {:?} file, not a shared object", file.kind()));
+    }
+    match openr_wrappers::mkbin::missing_dynamic_symbols_in(path, elf, openr_wrappers::mkbin::ENTRY_SYMBOLS) {
+        Ok(missing) if missing.is_empty() => None,
+        Ok(missing) => Some(format!("{} missing from the dynamic symbol table", missing.join(", "))),
+        Err(e) => Some(e.to_string()),
+    }
+}
+
+/// The 4-part service names (`Obj.Sub.Data.S|O`) among the strings of the object's
+/// read-only data: the literals of its `def.h`.
+pub fn services_in_rodata(elf: &[u8]) -> Vec<String> {
+    use object::{Object, ObjectSection};
+    let Ok(file) = object::File::parse(elf) else { return Vec::new() };
+    let mut out = Vec::new();
+    for section in file.sections() {
+        if !section.name().is_ok_and(|n| n.starts_with(".rodata")) {
+            continue;
+        }
+        let Ok(data) = section.data() else { continue };
+        // Split on every byte a service name cannot hold: a literal may directly follow
+        // other constant data, with no NUL in between.
+        let name_byte = |b: &u8| b.is_ascii_alphanumeric() || matches!(b, b'.' | b'_' | b'-');
+        for s in data.split(|b| !name_byte(b)) {
+            let Ok(s) = std::str::from_utf8(s) else { continue };
+            if is_service_name(s) && !out.iter().any(|o| o == s) {
+                out.push(s.to_string());
+            }
+        }
+    }
+    out
+}
+
+fn is_service_name(s: &str) -> bool {
+    let parts: Vec<&str> = s.split('.').collect();
+    parts.len() == 4
+        && (parts[3] == "S" || parts[3] == "O")
+        && parts[..3].iter().all(|p| !p.is_empty() && p.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-'))
+}
+
+fn kind(name: &str) -> Option<char> {
+    is_service_name(name).then(|| name.chars().last().unwrap())
+}
+
+fn data_name(name: &str) -> &str {
+    name.split('.').nth(2).unwrap_or("")
+}
+
+fn check_connections(ms: &MsDir, design: &str, services: &BTreeMap<String, Origin>, shown: &dyn Fn(&Path) -> PathBuf, report: &mut Report) {
+    let cfg = match CfgFile::find(ms, "CONNECT.CFG") {
+        Ok(cfg) => cfg,
+        Err(e) => {
+            report.push(Diagnostic::error("E0004", e.to_string()));
+            None
+        }
+    };
+    let mut connected: HashSet<String> = HashSet::new();
+    if let Some(cfg) = &cfg {
+        let file = shown(&cfg.path);
+        let mut seen: Vec<(String, String, usize)> = Vec::new();
+        for line in lines_for_design(&cfg.text, design) {
+            let at = |d: Diagnostic| d.at(&file, Some(line.number));
+            let [subject, observer] = &line.fields[..] else {
+                report.push(at(Diagnostic::error("E0004", format!("expected `<subject service> <observer service>`, found {} field(s)", line.fields.len()))
+                    .help("one connection a line: `Obj.Sub.Data.S Other.Sub.Data.O`")));
+                continue;
+            };
+            connected.insert(subject.clone());
+            connected.insert(observer.clone());
+            let (ks, ko) = (kind(subject), kind(observer));
+            let mut malformed = false;
+            for name in [subject, observer] {
+                if kind(name).is_none() {
+                    malformed = true;
+                    report.push(at(Diagnostic::error("E0004", format!("`{name}` is not a service name"))
+                        .help("a service name has four parts, `Object.SubName.DataName.S` (subject) or `.O` (observer), written without quotes")));
+                }
+            }
+            if malformed {
+                continue;
+            }
+            if ks == Some('O') && ko == Some('S') {
+                report.push(at(Diagnostic::error("E0005", "subject and observer are swapped")
+                    .help(format!("the subject (`.S`) comes first: `{observer} {subject}`"))));
+            } else if ks != Some('S') {
+                report.push(at(Diagnostic::error("E0005", format!("`{subject}` is an observer, but the first name of a connection must be a subject (`.S`)"))));
+            } else if ko != Some('O') {
+                report.push(at(Diagnostic::error("E0005", format!("`{observer}` is a subject, but the second name of a connection must be an observer (`.O`)"))));
+            }
+            if data_name(subject) != data_name(observer) {
+                report.push(at(Diagnostic::error("E0006", format!(
+                    "DataName differs: `{}` (subject) vs `{}` (observer)", data_name(subject), data_name(observer)
+                )).help("both ends of a connection must carry the same data type; the third parts of the names must be identical")));
+            }
+            for name in [subject, observer] {
+                if !services.contains_key(name.as_str()) && !SYSTEM_SERVICES.contains(&name.as_str()) {
+                    report.push(at(Diagnostic::error("E0007", format!("unknown service `{name}`: no object registers it"))
+                        .help(suggest(name, services))));
+                }
+            }
+            let (a, b) = if ks == Some('O') && ko == Some('S') { (observer, subject) } else { (subject, observer) };
+            if let Some((_, _, first)) = seen.iter().find(|(s, o, _)| s == a && o == b) {
+                report.push(at(Diagnostic::error("E0010", format!("duplicate connection `{a} {b}` (first on line {first})"))
+                    .help("remove this line")));
+            } else {
+                seen.push((a.clone(), b.clone(), line.number));
+            }
+        }
+    }
+    for (name, origin) in services {
+        if data_name(name) == DO_NOT_CONNECT || connected.contains(name) {
+            continue;
+        }
+        let what = if name.ends_with(".S") { "subject" } else { "observer" };
+        report.push(
+            Diagnostic::warning("W0002", format!("{what} `{name}` is never connected"))
+                .at(&origin.file, origin.line)
+                .help(format!("connect it in MS/OPEN-R/MW/CONF/CONNECT.CFG, or give it DataName `{DO_NOT_CONNECT}` if it is a dummy")),
+        );
+    }
+}
+
+/// A help line for an unknown service: the nearest known name, else where names come from.
+fn suggest(name: &str, services: &BTreeMap<String, Origin>) -> String {
+    let known = services.keys().map(String::as_str).chain(SYSTEM_SERVICES.iter().copied());
+    let prefix = |s: &str| s.rsplitn(3, '.').nth(2).map(str::to_string);
+    let same_object_sub = |s: &&str| prefix(s) == prefix(name);
+    let candidates: Vec<&str> = known.clone().filter(|s| s.eq_ignore_ascii_case(name)).chain(known.filter(same_object_sub)).collect();
+    match candidates.first() {
+        Some(c) => format!("did you mean `{c}`?"),
+        None => "services are declared in stub.cfg (`Service : \"Obj.Sub.Data.S\", …`) or are system services such as `OVirtualRobotComm.Effector.OCommandVectorData.O`".into(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn eight_dot_three() {
+        for ok in ["OPEN-R", "OBJECT.CFG", "MVLEGS.BIN", "ERS-210.TXT", "A", "X$~1.B"] {
+            assert!(is_8_3(ok), "{ok}");
+        }
+        for bad in ["TOOLONGNAME.BIN", "A.TOOL", "A.B.C", ".KEEP", "A B.TXT", "", "A."] {
+            assert!(!is_8_3(bad), "{bad}");
+        }
+    }
+
+    #[test]
+    fn service_names() {
+        assert!(is_service_name("SampleSubject.SendString.char.S"));
+        assert!(!is_service_name("a.b.c.s"));
+        assert!(!is_service_name("a.b.S"));
+        assert!(!is_service_name("a..c.O"));
+    }
+}

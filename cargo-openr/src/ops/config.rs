@@ -1,0 +1,213 @@
+//! The settings shared by the subcommands (SDK root, robot design, speed) and their one
+//! precedence: command line > environment > project file (`openr.toml`) > defaults.
+//!
+//! | setting | flag | environment | `openr.toml` | default |
+//! |---|---|---|---|---|
+//! | SDK root | `--sdk DIR` | `OPENRSDK_ROOT` (only a cargo-openr root) | `sdk = "DIR"` (relative to the file) | `~/.local/share/cargo-openr/OPEN_R_SDK` |
+//! | robot design | `--design NAME` | `OPENR_DESIGN` | `design = "ERS-7"` | `ERS-7` |
+//! | speed | `--speed F\|max` | `OPENR_SPEED` | `speed = 4` or `speed = "max"` | `1` |
+//!
+//! `openr.toml` sits beside the project's Makefile; it is looked for in the project
+//! directory and then in its parents. Only these three top-level keys are allowed.
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use anyhow::Context;
+use sdk_runtime::clock::Speed;
+
+pub const PROJECT_FILE: &str = "openr.toml";
+
+/// Where a value came from.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Source {
+    Cli(&'static str),
+    Env(&'static str),
+    Project(PathBuf),
+    Default,
+}
+
+impl fmt::Display for Source {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Source::Cli(flag) => write!(f, "command line ({flag})"),
+            Source::Env(var) => write!(f, "environment ({var})"),
+            Source::Project(p) => write!(f, "project file ({})", p.display()),
+            Source::Default => f.write_str("default"),
+        }
+    }
+}
+
+/// A resolved value and its origin.
+#[derive(Debug, Clone)]
+pub struct Setting<T> {
+    pub value: T,
+    pub source: Source,
+}
+
+/// What the command line gave (all optional) and where the project is.
+#[derive(Debug, Clone, Default)]
+pub struct ConfigInputs {
+    pub sdk: Option<PathBuf>,
+    pub design: Option<String>,
+    pub speed: Option<String>,
+    /// The project directory (where `openr.toml` is looked for, then its parents).
+    pub project: Option<PathBuf>,
+}
+
+/// The resolved configuration.
+#[derive(Debug, Clone)]
+pub struct Config {
+    pub sdk: Setting<PathBuf>,
+    pub design: Setting<String>,
+    pub speed: Setting<Speed>,
+    /// The `openr.toml` read, if any.
+    pub project_file: Option<PathBuf>,
+}
+
+/// The keys of an `openr.toml`, each with its line.
+#[derive(Debug, Default, PartialEq)]
+pub struct ProjectFile {
+    pub sdk: Option<(String, usize)>,
+    pub design: Option<(String, usize)>,
+    pub speed: Option<(String, usize)>,
+}
+
+/// Parses the subset of TOML `openr.toml` uses: `key = "string"` or `key = number`,
+/// `#` comments, blank lines. Errors read `<file>:<line>: …`.
+pub fn parse_project_file(path: &Path, text: &str) -> anyhow::Result<ProjectFile> {
+    let mut out = ProjectFile::default();
+    for (i, raw) in text.lines().enumerate() {
+        let n = i + 1;
+        let line = strip_comment(raw).trim();
+        if line.is_empty() {
+            continue;
+        }
+        let err = |m: String| anyhow::anyhow!("{}:{n}: {m}", path.display());
+        let Some((key, value)) = line.split_once('=') else {
+            return Err(err(format!("expected `key = value`, found `{line}`")));
+        };
+        let (key, value) = (key.trim(), value.trim());
+        let value = if let Some(inner) = value.strip_prefix('"') {
+            let Some(inner) = inner.strip_suffix('"') else { return Err(err(format!("unterminated string `{value}`"))) };
+            inner.replace("\\\"", "\"").replace("\\\\", "\\")
+        } else if !value.is_empty() && value.chars().all(|c| c.is_ascii_digit() || c == '.') {
+            value.to_string()
+        } else {
+            return Err(err(format!("`{value}` is not a value: write a string (\"…\") or a number")));
+        };
+        let slot = match key {
+            "sdk" => &mut out.sdk,
+            "design" => &mut out.design,
+            "speed" => &mut out.speed,
+            _ => return Err(err(format!("unknown key `{key}` (known: sdk, design, speed)"))),
+        };
+        if slot.is_some() {
+            return Err(err(format!("`{key}` is set twice")));
+        }
+        *slot = Some((value, n));
+    }
+    Ok(out)
+}
+
+/// `#` starts a comment outside strings.
+fn strip_comment(line: &str) -> &str {
+    let mut in_str = false;
+    for (i, c) in line.char_indices() {
+        match c {
+            '"' => in_str = !in_str,
+            '#' if !in_str => return &line[..i],
+            _ => {}
+        }
+    }
+    line
+}
+
+/// The `openr.toml` of the project at `dir` (or of its nearest parent that has one).
+pub fn find_project_file(dir: &Path) -> Option<PathBuf> {
+    let abs = std::path::absolute(dir).ok()?;
+    abs.ancestors().map(|d| d.join(PROJECT_FILE)).find(|p| p.is_file())
+}
+
+fn env(var: &str) -> Option<String> {
+    std::env::var(var).ok().filter(|v| !v.is_empty())
+}
+
+/// Resolves every setting: CLI > environment > project file > defaults.
+pub fn resolve(inputs: &ConfigInputs) -> anyhow::Result<Config> {
+    let project_file = inputs.project.as_deref().and_then(find_project_file);
+    let project = match &project_file {
+        Some(p) => {
+            let text = std::fs::read_to_string(p).with_context(|| format!("cannot read {}", p.display()))?;
+            parse_project_file(p, &text)?
+        }
+        None => ProjectFile::default(),
+    };
+    let from_file = |v: &Option<(String, usize)>| -> Option<(String, Source)> {
+        let (value, _) = v.as_ref()?;
+        Some((value.clone(), Source::Project(project_file.clone()?)))
+    };
+
+    let sdk = if let Some(p) = &inputs.sdk {
+        Setting { value: p.clone(), source: Source::Cli("--sdk") }
+    } else if let Some(p) = env("OPENRSDK_ROOT").map(PathBuf::from).filter(|p| openr_wrappers::install::is_sdk_root(p)) {
+        Setting { value: p, source: Source::Env("OPENRSDK_ROOT") }
+    } else if let Some((v, src)) = from_file(&project.sdk) {
+        let base = project_file.as_deref().and_then(Path::parent).unwrap_or(Path::new("."));
+        Setting { value: base.join(v), source: src }
+    } else {
+        let p = openr_wrappers::install::default_prefix().context("cannot find a home directory; pass --sdk DIR")?;
+        Setting { value: p, source: Source::Default }
+    };
+
+    let pick = |cli: &Option<String>, flag: &'static str, var: &'static str, file: &Option<(String, usize)>, default: &str| -> (String, Source) {
+        if let Some(v) = cli {
+            (v.clone(), Source::Cli(flag))
+        } else if let Some(v) = env(var) {
+            (v, Source::Env(var))
+        } else if let Some(x) = from_file(file) {
+            x
+        } else {
+            (default.to_string(), Source::Default)
+        }
+    };
+    let (design, design_src) = pick(&inputs.design, "--design", "OPENR_DESIGN", &project.design, "ERS-7");
+    let (speed, speed_src) = pick(&inputs.speed, "--speed", "OPENR_SPEED", &project.speed, "1");
+    let speed: Speed = speed.parse().map_err(|e: String| {
+        let at = match &speed_src {
+            Source::Project(p) => format!("{}:{}: ", p.display(), project.speed.as_ref().map_or(0, |s| s.1)),
+            other => format!("{other}: "),
+        };
+        anyhow::anyhow!("{at}{e}")
+    })?;
+    Ok(Config {
+        sdk: Setting { value: std::path::absolute(&sdk.value).unwrap_or(sdk.value), source: sdk.source },
+        design: Setting { value: design, source: design_src },
+        speed: Setting { value: speed, source: speed_src },
+        project_file,
+    })
+}
+
+/// `1`, `4`, `0.5`, `max`.
+pub fn speed_text(s: Speed) -> String {
+    match s {
+        Speed::Max => "max".into(),
+        Speed::Factor(f) => format!("{f}"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn project_file_subset() {
+        let f = parse_project_file(Path::new("openr.toml"), "# c\nsdk = \"../sdk\" # root\n\ndesign = \"ERS-210\"\nspeed = 4\n").unwrap();
+        assert_eq!(f.sdk, Some(("../sdk".into(), 2)));
+        assert_eq!(f.design, Some(("ERS-210".into(), 4)));
+        assert_eq!(f.speed, Some(("4".into(), 5)));
+        for (text, want) in [("colour = \"red\"\n", "openr.toml:1: unknown key `colour`"), ("x\n", "expected `key = value`"), ("[a]\n", "expected"), ("speed = max\n", "not a value")] {
+            let e = parse_project_file(Path::new("openr.toml"), text).unwrap_err().to_string();
+            assert!(e.contains(want), "{text}: {e}");
+        }
+    }
+}
