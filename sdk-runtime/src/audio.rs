@@ -131,6 +131,9 @@ struct Playing {
 /// What the speaker finished in one frame.
 pub struct SpeakerStep {
     pub done: Vec<u64>,
+    /// The PCM of each sound slot that started in this frame (as in the vector: 8-bit
+    /// signed or 16-bit little-endian), for external robot peers.
+    pub started: Vec<(Format, Vec<u8>)>,
 }
 
 pub struct Speaker {
@@ -170,6 +173,7 @@ impl Speaker {
     /// `frameNumber` and its PCM), counts down the one playing.
     pub fn step(&mut self, frame: u32, amplifier_on: bool, warn: impl Fn(&str)) -> SpeakerStep {
         let mut done = Vec::new();
+        let mut started = Vec::new();
         if let Some(p) = self.queue.front_mut() {
             if !p.started {
                 p.started = true;
@@ -181,6 +185,7 @@ impl Speaker {
                     let pcm = &bytes[s.data_offset as usize..(s.data_offset + s.data_size) as usize];
                     let format = Format { rate: s.sampling_rate as u32, bits: s.bits_per_sample, channels: s.channel.max(1) };
                     self.record(pcm, format, amplifier_on, &warn);
+                    started.push((format, if amplifier_on { pcm.to_vec() } else { vec![0; pcm.len()] }));
                 }
             }
             let p = self.queue.front_mut().expect("front exists");
@@ -190,7 +195,7 @@ impl Speaker {
                 self.queue.pop_front();
             }
         }
-        SpeakerStep { done }
+        SpeakerStep { done, started }
     }
 
     fn record(&mut self, pcm: &[u8], format: Format, amplifier_on: bool, warn: &impl Fn(&str)) {

@@ -45,6 +45,9 @@ pub struct RunOptions {
     pub images: Option<PathBuf>,
     /// Unix socket for pause / step / resume / speed commands.
     pub control: Option<PathBuf>,
+    /// External robot peers: where they attach, whether to wait for one
+    /// (docs/robot-protocol.md).
+    pub peers: crate::peer::PeerOptions,
 }
 
 /// How a run went.
@@ -147,6 +150,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     if let Some(path) = &opts.control {
         crate::control::serve(rt, path)?;
     }
+    crate::peer::serve(rt, &opts.peers)?;
     std::thread::Builder::new()
         .name("openr-robot".into())
         .spawn(move || crate::vr::run_frames(rt))
@@ -177,6 +181,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         }
     }
     rt.vr.flush_trace();
+    rt.vr.peers.close_all(&format!("the run ended ({ended:?})"));
     unsafe { libc::fflush(std::ptr::null_mut()) };
     let load = |c: &std::sync::atomic::AtomicU64| c.load(std::sync::atomic::Ordering::Relaxed);
     Ok(Outcome { ended, frames: load(&rt.vr.frames), late_frames: load(&rt.vr.late_frames) })

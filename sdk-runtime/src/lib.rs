@@ -27,6 +27,7 @@ pub mod loader;
 pub mod ms;
 pub mod net;
 pub mod object;
+pub mod peer;
 pub mod power;
 pub mod robot_api;
 pub mod robot;

@@ -65,6 +65,8 @@ pub struct VrService {
     /// Frames run, and those that started more than a frame late (real-time speeds).
     pub frames: std::sync::atomic::AtomicU64,
     pub late_frames: std::sync::atomic::AtomicU64,
+    /// External robot peers (docs/robot-protocol.md).
+    pub peers: crate::peer::Hub,
 }
 
 /// The camera's service name: rendering is skipped unless something observes it.
@@ -83,6 +85,7 @@ impl VrService {
             image: Mutex::new(Vec::new()),
             frames: std::sync::atomic::AtomicU64::new(0),
             late_frames: std::sync::atomic::AtomicU64::new(0),
+            peers: crate::peer::Hub::default(),
         }
     }
 
@@ -127,9 +130,19 @@ impl VrService {
         Ok(token)
     }
 
-    /// Runs one frame and delivers what it produced.
+    /// Runs one frame and delivers what it produced. With robot peers attached, the
+    /// frame's effector output goes to them between the commands and the sensors, and
+    /// what they supplied (readings, a camera picture) replaces the model's.
     pub fn step(&self, rt: &Runtime) {
-        let out = self.robot().step_frame();
+        let pending = self.robot().begin_frame();
+        let amplifier = self.robot().motor_power();
+        let played = self.speaker.lock().unwrap_or_else(|p| p.into_inner()).step(pending.frame(), amplifier, |m| rt.diag.warn(m));
+        if self.peers.active() {
+            let payload = crate::peer::frame_payload(&self.robot(), &pending);
+            let inbound = self.peers.exchange(rt, &pending, &payload, &played.started);
+            inbound.apply(&mut self.robot());
+        }
+        let out = self.robot().end_frame(pending);
         for s in &out.started {
             if let Some(&(base, size)) = self.wiring().playing.get(&s.token) {
                 // SAFETY: still held by the system object (not reported done yet).
@@ -156,8 +169,6 @@ impl VrService {
             self.publish_slice(rt, SERVICE_IMAGE, &v);
             *self.image.lock().unwrap_or_else(|p| p.into_inner()) = v;
         }
-        let amplifier = self.robot().motor_power();
-        let played = self.speaker.lock().unwrap_or_else(|p| p.into_inner()).step(out.frame, amplifier, |m| rt.diag.warn(m));
         if let Some((oid, sel)) = self.wiring().providers[SERVICE_SPEAKER] {
             for token in played.done {
                 let ev = VrEvent { kind: EVENT_DONE, service: SERVICE_SPEAKER as u32, token, mem_id: 0, size: 0 };
@@ -165,7 +176,11 @@ impl VrService {
             }
         }
         if out.mic_due && self.wiring().providers[SERVICE_MIC].is_some() {
-            let block = self.mic.lock().unwrap_or_else(|p| p.into_inner()).next_block();
+            let block = if self.peers.has_role(crate::peer::wire::ROLE_MIC) {
+                self.peers.mic_block()
+            } else {
+                self.mic.lock().unwrap_or_else(|p| p.into_inner()).next_block()
+            };
             let mic_id = self.robot().open_primitive("PRM:/r1/c1/c2/c3/m1-Mic:M1").unwrap_or(0);
             if let Ok(v) = vectors::build_mic_vector(mic_id, out.frame, &block) {
                 self.publish(rt, SERVICE_MIC, v);
@@ -211,6 +226,7 @@ impl VrService {
 /// `max` each frame starts as soon as every object has handled everything sent to it,
 /// so no sensor frame is ever dropped. Due timers fire after each frame.
 pub fn run_frames(rt: &'static Runtime) -> ! {
+    rt.vr.peers.wait_for_clock_owner(rt);
     let mut next = Instant::now();
     let mut late = 0u64;
     let mut late_reported = 0u64;

@@ -30,6 +30,15 @@ pub struct Args {
     /// Serve pause / resume / step / speed / status commands on this Unix socket
     #[arg(long, value_name = "PATH")]
     control: Option<PathBuf>,
+    /// Let external robot peers (simulator, recorder, real-robot bridge) attach on this Unix socket (docs/robot-protocol.md)
+    #[arg(long, value_name = "PATH")]
+    robot_socket: Option<PathBuf>,
+    /// Let robot peers attach on this loopback TCP address (127.0.0.1:PORT; port 0 picks one)
+    #[arg(long, value_name = "ADDR", value_parser = parse_loopback)]
+    robot_tcp: Option<std::net::SocketAddr>,
+    /// Run no frame before a robot peer owning the clock (lockstep) has attached
+    #[arg(long)]
+    robot_wait: bool,
     /// Write what the speaker plays to this WAV file
     #[arg(long, value_name = "FILE")]
     speaker_wav: Option<PathBuf>,
@@ -57,6 +66,14 @@ pub struct Args {
     /// Add N to every port the robot binds (privileged ports first move to 10000+port), so two robots can run one program
     #[arg(long, value_name = "N", default_value_t = 0)]
     port_offset: u16,
+}
+
+fn parse_loopback(s: &str) -> Result<std::net::SocketAddr, String> {
+    let a: std::net::SocketAddr = s.parse().map_err(|_| format!("`{s}` is not an address (try 127.0.0.1:7700)"))?;
+    if !a.ip().is_loopback() {
+        return Err(format!("`{s}`: robot peers attach on loopback addresses only (127.0.0.1, ::1)"));
+    }
+    Ok(a)
 }
 
 fn parse_speed(s: &str) -> Result<Speed, String> {
@@ -108,6 +125,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         mic_wav: args.mic_wav.clone(),
         images: args.images.clone(),
         control: args.control.clone(),
+        peers: sdk_runtime::peer::PeerOptions { socket: args.robot_socket.clone(), tcp: args.robot_tcp, wait: args.robot_wait },
         ms_dir: args.ms_dir.clone(),
         design: args.design,
         run_for: args.run_for,

@@ -103,6 +103,51 @@ pub struct VirtualRobot {
     pending_trace: Vec<TraceEvent>,
     trace_enabled: bool,
     camera: camera::Camera,
+    /// Non-joint readings supplied from outside (an external robot peer): they replace
+    /// the synthesized values until cleared ([`VirtualRobot::apply_readings`]).
+    sensor_override: HashMap<PrimitiveId, SensorValue>,
+    /// A camera picture supplied from outside (sensor-resolution RGB), used for every
+    /// image until cleared ([`VirtualRobot::set_camera_rgb`]).
+    external_rgb: Option<Vec<u8>>,
+}
+
+/// Readings measured outside the model (an external robot peer) for the frame in
+/// progress: joint angles (µrad) and non-joint sensor values (the sensor's `value`
+/// unit: µm/s², µm, 0/1, …).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Readings {
+    pub joints: Vec<(PrimitiveId, i32)>,
+    pub sensors: Vec<(PrimitiveId, i32)>,
+}
+
+/// A frame whose commands have been applied but whose sensors are not sampled yet
+/// ([`VirtualRobot::begin_frame`] / [`VirtualRobot::end_frame`]).
+#[derive(Debug)]
+pub struct PendingFrame {
+    tick: frame_clock::Tick,
+    ef: effector::EffectorFrame,
+    events: Vec<TraceEvent>,
+}
+
+impl PendingFrame {
+    /// Frame number in progress.
+    pub fn frame(&self) -> u32 {
+        self.tick.frame
+    }
+    /// Virtual time at the end of the frame, ms since boot.
+    pub fn time_ms(&self) -> u64 {
+        self.tick.time_ms
+    }
+    /// A sensor vector completes with this frame.
+    pub fn sensor_due(&self) -> bool {
+        self.tick.sensor_vector.is_some()
+    }
+    pub fn camera_due(&self) -> bool {
+        self.tick.camera
+    }
+    pub fn mic_due(&self) -> bool {
+        self.tick.mic
+    }
 }
 
 impl VirtualRobot {
@@ -130,6 +175,8 @@ impl VirtualRobot {
             pending_trace: Vec::new(),
             trace_enabled: true,
             camera: camera::Camera::new(design),
+            sensor_override: HashMap::new(),
+            external_rgb: None,
         }
     }
 
@@ -475,7 +522,12 @@ impl VirtualRobot {
     /// primitive ID and `frameNumber` = `frame`, H/M/L/C layers and tags. The field
     /// counter advances by one per call.
     pub fn render_image(&mut self, frame: u32, out: &mut Vec<u8>) {
-        if !self.camera.fill_from_source() {
+        if let Some(rgb) = &self.external_rgb {
+            let n = self.camera.rgb.width * self.camera.rgb.height * 3;
+            self.camera.rgb.data.clear();
+            self.camera.rgb.data.extend_from_slice(&rgb[..n.min(rgb.len())]);
+            self.camera.rgb.data.resize(n, 0);
+        } else if !self.camera.fill_from_source() {
             let cam = self.camera_model();
             cam.render(&self.scene.camera, self.scene.wall_mm, &mut self.camera.rgb.data);
         }
@@ -499,8 +551,77 @@ impl VirtualRobot {
         self.model.locator(id).unwrap_or("?")
     }
 
+    // -- readings from outside (external robot peers) ----------------------------------
+
+    /// Replaces measured values for the frame in progress (call between
+    /// [`VirtualRobot::begin_frame`] and [`VirtualRobot::end_frame`]): each joint's
+    /// measured angle becomes the given µrad (it stays there — the built-in servo model
+    /// continues from it when no more readings come); each non-joint sensor reports the
+    /// given value (its `signal` derived as the model does) until
+    /// [`VirtualRobot::clear_sensor_overrides`]. Unknown IDs are errors.
+    pub fn apply_readings(&mut self, r: &Readings) -> Result<(), PrimitiveId> {
+        for &(id, _) in r.joints.iter() {
+            if self.body.joint(id).is_none() {
+                return Err(id);
+            }
+        }
+        for &(id, _) in r.sensors.iter() {
+            match self.model.primitive(id) {
+                Some(p) if matches!(p.kind, PrimitiveKind::Sensor(_)) => {}
+                _ => return Err(id),
+            }
+        }
+        for &(id, v) in &r.joints {
+            if let Some(j) = self.body.joint_mut(id) {
+                j.angle = v as f64;
+            }
+        }
+        for &(id, v) in &r.sensors {
+            if let Some(p) = self.model.primitive(id) {
+                self.sensor_override.insert(id, SensorValue { value: v, signal: scene::signal_for(p.part, v) });
+            }
+        }
+        Ok(())
+    }
+
+    /// Drops the outside values of these sensors (all when `ids` is `None`): the model
+    /// synthesizes them again from the next frame on.
+    pub fn clear_sensor_overrides(&mut self, ids: Option<&[PrimitiveId]>) {
+        match ids {
+            None => self.sensor_override.clear(),
+            Some(ids) => {
+                for id in ids {
+                    self.sensor_override.remove(id);
+                }
+            }
+        }
+    }
+
+    /// Supplies the camera picture (sensor-resolution RGB, `width × height × 3` bytes of
+    /// [`camera::Camera::rgb`]) used for every image from now on; `None` returns to the
+    /// image file source or the rendered scene.
+    pub fn set_camera_rgb(&mut self, rgb: Option<Vec<u8>>) -> Result<(), String> {
+        if let Some(data) = &rgb {
+            let n = self.camera.rgb.width * self.camera.rgb.height * 3;
+            if data.len() != n {
+                return Err(format!("camera image of {} bytes, expected {n} ({}x{} RGB)", data.len(), self.camera.rgb.width, self.camera.rgb.height));
+            }
+        }
+        self.external_rgb = rgb;
+        Ok(())
+    }
+
     /// Executes one 8 ms frame.
     pub fn step_frame(&mut self) -> FrameOutput {
+        let p = self.begin_frame();
+        self.end_frame(p)
+    }
+
+    /// First half of a frame: the effector's commands of the frame are applied (targets,
+    /// LEDs, ears) and the servos advanced. Readings from outside may then replace the
+    /// measured state ([`VirtualRobot::apply_readings`]) before [`VirtualRobot::end_frame`]
+    /// samples the sensors.
+    pub fn begin_frame(&mut self) -> PendingFrame {
         let tick = self.clock.tick();
         let ef = self.effector.step(tick.count, tick.frame, &mut self.sync);
         let mut events: Vec<TraceEvent> = std::mem::take(&mut self.pending_trace);
@@ -542,9 +663,18 @@ impl VirtualRobot {
                 });
             }
         }
+        PendingFrame { tick, ef, events }
+    }
 
+    /// Second half of a frame: samples the sensors, completes the sensor vector when due.
+    pub fn end_frame(&mut self, pending: PendingFrame) -> FrameOutput {
+        let PendingFrame { tick, ef, mut events } = pending;
+        let tracing = self.trace_enabled;
         // sensors of this frame
         self.latest = self.synth.sample(&self.body, &self.scene, tick.frame);
+        for (id, v) in &self.sensor_override {
+            self.latest.insert(*id, *v);
+        }
         let snapshot: Vec<FrameValue> = self
             .model
             .sensor_entries()

@@ -200,6 +200,25 @@ fn touch(on: bool) -> SensorValue {
     SensorValue { value: v, signal: v as u16 }
 }
 
+/// The raw `signal` the model reports with a sensor `value` measured outside the model
+/// (an external robot peer): the same mappings as the synthesized readings.
+pub fn signal_for(part: Part, value: i32) -> u16 {
+    match part {
+        Part::PsdHeadNear => psd_value(value as f64 / 1000.0, 50_000, 500_000).signal,
+        Part::PsdHeadFar => psd_value(value as f64 / 1000.0, 200_000, 1_500_000).signal,
+        Part::PsdHead | Part::PsdChest => psd_value(value as f64 / 1000.0, 100_000, 900_000).signal,
+        Part::Accel(_) => (value as f64 / 19_613_300.0 * 32767.0 + 32768.0).round().clamp(0.0, 65535.0) as u16,
+        Part::HeadPressure(_) => {
+            if value > 0 {
+                512
+            } else {
+                0
+            }
+        }
+        _ => value.clamp(0, 65535) as u16,
+    }
+}
+
 /// Stateful sensor synthesis (PSD alternation and refresh).
 #[derive(Clone, Debug, Default)]
 pub struct SensorSynth {

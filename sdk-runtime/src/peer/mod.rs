@@ -1,0 +1,637 @@
+//! The external robot protocol (docs/robot-protocol.md): peers — a physics simulator,
+//! a recorder, a bridge to a real robot — attach on a Unix socket (`--robot-socket`)
+//! or a loopback TCP port (`--robot-tcp`), receive every frame's effector output and
+//! may supply sensor readings, camera pictures and microphone sound, and one of them
+//! may own the clock (lockstep: frame N completes only once that peer sent its
+//! READINGS for frame N).
+//!
+//! Threads: one accept thread per listening socket, one reader thread per connection
+//! (parses, validates, answers HELLO and errors, files what the peer supplies in the
+//! [`Hub`]). The frame thread calls [`Hub::exchange`] in the middle of each frame (after
+//! the commands, before the sensors) to send FRAME / SPEAKER and to collect what the
+//! peers supplied. A peer that disconnects leaves the robot where it last reported it;
+//! the built-in model continues from there.
+pub mod wire;
+
+use std::collections::VecDeque;
+use std::io::{Read, Write};
+use std::net::{Shutdown, SocketAddr, TcpListener, TcpStream};
+use std::os::unix::net::{UnixListener, UnixStream};
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Condvar, Mutex, MutexGuard};
+
+use crate::audio::Format;
+use crate::error::{Error, ErrorKind, Result};
+use crate::robot::model::{PrimitiveKind, SensorKind};
+use crate::robot::{PendingFrame, PrimitiveId, Readings, VirtualRobot};
+use crate::runtime::Runtime;
+use wire::*;
+
+/// Where peers attach.
+#[derive(Debug, Clone, Default)]
+pub struct PeerOptions {
+    pub socket: Option<PathBuf>,
+    /// Loopback address only.
+    pub tcp: Option<SocketAddr>,
+    /// Run no frame before a peer owning the clock has attached.
+    pub wait: bool,
+}
+
+/// Microphone sound a peer may queue ahead (16 s).
+const MIC_QUEUE_MAX: usize = 1 << 20;
+/// Bytes of one microphone block (16 ms of 16 kHz stereo 16-bit).
+const MIC_BLOCK: usize = 1024;
+
+enum Conn {
+    Unix(UnixStream),
+    Tcp(TcpStream),
+}
+
+impl Conn {
+    fn try_clone(&self) -> std::io::Result<Conn> {
+        Ok(match self {
+            Conn::Unix(s) => Conn::Unix(s.try_clone()?),
+            Conn::Tcp(s) => Conn::Tcp(s.try_clone()?),
+        })
+    }
+    fn shutdown(&self) {
+        let _ = match self {
+            Conn::Unix(s) => s.shutdown(Shutdown::Both),
+            Conn::Tcp(s) => s.shutdown(Shutdown::Both),
+        };
+    }
+}
+
+impl Read for Conn {
+    fn read(&mut self, b: &mut [u8]) -> std::io::Result<usize> {
+        match self {
+            Conn::Unix(s) => s.read(b),
+            Conn::Tcp(s) => s.read(b),
+        }
+    }
+}
+
+impl Write for Conn {
+    fn write(&mut self, b: &[u8]) -> std::io::Result<usize> {
+        match self {
+            Conn::Unix(s) => s.write(b),
+            Conn::Tcp(s) => s.write(b),
+        }
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+struct Peer {
+    id: u64,
+    name: String,
+    roles: u32,
+    writer: Mutex<Conn>,
+}
+
+impl Peer {
+    fn send(&self, kind: u16, frame: u32, payload: &[u8]) -> std::io::Result<()> {
+        let m = message(kind, frame, payload);
+        self.writer.lock().unwrap_or_else(|p| p.into_inner()).write_all(&m)
+    }
+}
+
+#[derive(Default)]
+struct State {
+    peers: Vec<Arc<Peer>>,
+    next_id: u64,
+    clock: Option<u64>,
+    /// Owner of each role bit.
+    roles: [Option<u64>; 7],
+    /// (clock owner, frame) whose READINGS the frame thread waits for.
+    awaiting: Option<(u64, u32)>,
+    lockstep: Option<Readings>,
+    /// READINGS of peers not owning the clock, applied at the next frame.
+    pending: Vec<Readings>,
+    image: Option<Vec<u8>>,
+    mic: VecDeque<u8>,
+    /// Roles given up since the last frame (their outside values are dropped).
+    released: u32,
+    last_frame: u32,
+    time_ms: u64,
+    closed: bool,
+}
+
+/// Peers attached to the robot.
+#[derive(Default)]
+pub struct Hub {
+    st: Mutex<State>,
+    cv: Condvar,
+    active: std::sync::atomic::AtomicBool,
+    wait: std::sync::atomic::AtomicBool,
+}
+
+/// What the peers supplied for one frame.
+pub struct Inbound {
+    readings: Vec<Readings>,
+    image: Option<Vec<u8>>,
+    released: u32,
+}
+
+impl Hub {
+    fn lock(&self) -> MutexGuard<'_, State> {
+        self.st.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// True while at least one peer is attached (or ever was: cheap check per frame).
+    pub fn active(&self) -> bool {
+        self.active.load(std::sync::atomic::Ordering::Acquire)
+    }
+
+    /// Does an attached peer hold `role`?
+    pub fn has_role(&self, role: u32) -> bool {
+        self.active() && self.lock().roles[role.trailing_zeros() as usize].is_some()
+    }
+
+    /// Frame thread, before the first frame: with `--robot-wait`, blocks until a peer
+    /// owns the clock.
+    pub fn wait_for_clock_owner(&self, rt: &Runtime) {
+        if !self.wait.load(std::sync::atomic::Ordering::Acquire) {
+            return;
+        }
+        rt.diag.info("virtual robot: waiting for a robot peer to take the clock");
+        let mut st = self.lock();
+        while st.clock.is_none() && !st.closed {
+            st = self.cv.wait(st).unwrap_or_else(|p| p.into_inner());
+        }
+    }
+
+    /// The next microphone block from the peer holding the mic role (silence when it
+    /// sent too little).
+    pub fn mic_block(&self) -> Vec<u8> {
+        let mut st = self.lock();
+        let n = st.mic.len().min(MIC_BLOCK);
+        let mut block: Vec<u8> = st.mic.drain(..n).collect();
+        block.resize(MIC_BLOCK, 0);
+        block
+    }
+
+    /// Frame thread, between the commands and the sensors of a frame: sends SPEAKER
+    /// (what starts playing now) and FRAME to every peer, waits for the clock owner's
+    /// READINGS of this frame (lockstep: however long it takes, or until it leaves),
+    /// and returns what the peers supplied.
+    pub fn exchange(&self, rt: &Runtime, frame: &PendingFrame, frame_payload: &[u8], speaker: &[(Format, Vec<u8>)]) -> Inbound {
+        let n = frame.frame();
+        let (peers, owner) = {
+            let mut st = self.lock();
+            st.last_frame = n;
+            st.time_ms = frame.time_ms();
+            let owner = st.clock;
+            st.awaiting = owner.map(|o| (o, n));
+            st.lockstep = None;
+            (st.peers.clone(), owner)
+        };
+        let flags_at = 8; // offset of the flags byte in the FRAME payload
+        for p in &peers {
+            let mut ok = true;
+            if p.roles & ROLE_SPEAKER != 0 {
+                for (f, pcm) in speaker {
+                    let mut o = Out::default();
+                    o.u32(f.rate).u16(f.bits).u16(f.channels).bytes(pcm);
+                    ok &= p.send(SPEAKER, n, &o.0).is_ok();
+                }
+            }
+            if ok {
+                let res = if Some(p.id) == owner {
+                    let mut payload = frame_payload.to_vec();
+                    payload[flags_at] |= FRAME_READINGS_EXPECTED;
+                    p.send(FRAME, n, &payload)
+                } else {
+                    p.send(FRAME, n, frame_payload)
+                };
+                ok = res.is_ok();
+            }
+            if !ok {
+                self.detach(rt, p.id, "the connection broke");
+            }
+        }
+        let mut st = self.lock();
+        if let Some(o) = owner {
+            while st.lockstep.is_none() && st.clock == Some(o) && !st.closed {
+                st = self.cv.wait(st).unwrap_or_else(|p| p.into_inner());
+            }
+        }
+        st.awaiting = None;
+        let mut readings = std::mem::take(&mut st.pending);
+        readings.extend(st.lockstep.take());
+        Inbound { readings, image: st.image.take(), released: std::mem::take(&mut st.released) }
+    }
+
+    /// Removes a peer (idempotent): its roles and the clock return to the built-in robot.
+    fn detach(&self, rt: &Runtime, id: u64, why: &str) {
+        let mut st = self.lock();
+        let Some(pos) = st.peers.iter().position(|p| p.id == id) else { return };
+        let p = st.peers.remove(pos);
+        p.writer.lock().unwrap_or_else(|p| p.into_inner()).shutdown();
+        {
+            let s = &mut *st;
+            for (bit, owner) in s.roles.iter_mut().enumerate() {
+                if *owner == Some(id) {
+                    *owner = None;
+                    s.released |= 1 << bit;
+                }
+            }
+        }
+        if st.clock == Some(id) {
+            st.clock = None;
+        }
+        if st.roles[ROLE_MIC.trailing_zeros() as usize].is_none() {
+            st.mic.clear();
+        }
+        let frame = st.last_frame;
+        drop(st);
+        self.cv.notify_all();
+        rt.diag.info(&format!("robot peer `{}` detached after frame {frame} ({why}); the built-in robot takes over", p.name));
+    }
+
+    /// End of the run: BYE to every peer, connections closed.
+    pub fn close_all(&self, reason: &str) {
+        let peers = {
+            let mut st = self.lock();
+            st.closed = true;
+            std::mem::take(&mut st.peers)
+        };
+        self.cv.notify_all();
+        let frame = self.lock().last_frame;
+        for p in peers {
+            let mut o = Out::default();
+            o.str(reason);
+            let _ = p.send(BYE, frame, &o.0);
+            p.writer.lock().unwrap_or_else(|p| p.into_inner()).shutdown();
+        }
+    }
+}
+
+impl Inbound {
+    /// Applies the readings, the camera picture and the release of roles to the robot.
+    pub fn apply(self, robot: &mut VirtualRobot) {
+        if self.released != 0 {
+            let ids: Vec<PrimitiveId> = robot
+                .model()
+                .primitives()
+                .iter()
+                .filter(|p| role_of(p.kind).is_some_and(|r| r & self.released != 0 && r != ROLE_JOINTS))
+                .map(|p| p.id)
+                .collect();
+            robot.clear_sensor_overrides(Some(&ids));
+            if self.released & ROLE_CAMERA != 0 {
+                let _ = robot.set_camera_rgb(None);
+            }
+        }
+        for r in &self.readings {
+            // validated by the reader thread
+            let _ = robot.apply_readings(r);
+        }
+        if let Some(rgb) = self.image {
+            let _ = robot.set_camera_rgb(Some(rgb));
+        }
+    }
+}
+
+/// The role a primitive's readings belong to.
+fn role_of(kind: PrimitiveKind) -> Option<u32> {
+    match kind {
+        PrimitiveKind::Joint2 => Some(ROLE_JOINTS),
+        PrimitiveKind::Sensor(SensorKind::Accelerometer) => Some(ROLE_ACCEL),
+        PrimitiveKind::Sensor(SensorKind::Psd) => Some(ROLE_PSD),
+        PrimitiveKind::Sensor(_) => Some(ROLE_SWITCHES),
+        _ => None,
+    }
+}
+
+fn class_of(kind: PrimitiveKind) -> u16 {
+    match kind {
+        PrimitiveKind::Joint2 => CLASS_JOINT,
+        PrimitiveKind::Joint3 | PrimitiveKind::Joint4 => CLASS_EAR,
+        PrimitiveKind::Led2 => CLASS_LED2,
+        PrimitiveKind::Led3 => CLASS_LED3,
+        PrimitiveKind::Sensor(SensorKind::Accelerometer) => CLASS_ACCEL,
+        PrimitiveKind::Sensor(SensorKind::Psd) => CLASS_PSD,
+        PrimitiveKind::Sensor(SensorKind::Thermometer) => CLASS_OTHER,
+        PrimitiveKind::Sensor(_) => CLASS_SWITCH,
+        PrimitiveKind::FbkImageSensor => CLASS_CAMERA,
+        PrimitiveKind::Mic => CLASS_MIC,
+        PrimitiveKind::Speaker => CLASS_SPEAKER,
+    }
+}
+
+/// The FRAME payload of a frame in progress (flags without READINGS_EXPECTED).
+pub fn frame_payload(robot: &VirtualRobot, f: &PendingFrame) -> Vec<u8> {
+    let mut flags = 0u8;
+    if f.sensor_due() {
+        flags |= FRAME_SENSOR_DUE;
+    }
+    if f.camera_due() {
+        flags |= FRAME_CAMERA_DUE;
+    }
+    if f.mic_due() {
+        flags |= FRAME_MIC_DUE;
+    }
+    let body = robot.body();
+    let model = robot.model();
+    let mut o = Out::default();
+    o.u64(f.time_ms()).u8(flags).u8(body.motor_power() as u8).u8(body.face_mode() as u8).u8(0);
+    let joints: Vec<_> = model.joints().filter_map(|p| body.joint(p.id).map(|j| (p.id, j))).collect();
+    o.u16(joints.len() as u16);
+    for (id, j) in joints {
+        o.u32(id).i32(j.reference).i32(j.angle.round() as i32);
+        o.u16(j.gain.loaded.p).u16(j.gain.loaded.i).u16(j.gain.loaded.d).u8(j.gain.enabled as u8).u8(0);
+    }
+    let leds: Vec<_> = model.primitives().iter().filter_map(|p| body.led(p.id).map(|s| (p.id, s))).collect();
+    o.u16(leds.len() as u16);
+    for (id, s) in leds {
+        use crate::robot::kinematics::LedState;
+        match s {
+            LedState::Led2 { on } => o.u32(id).u8(on as u8).u8(2).u16(0),
+            LedState::Led3 { intensity, mode } => o.u32(id).u8(intensity).u8(3).u16(mode),
+        };
+    }
+    let ears: Vec<_> = model.primitives().iter().filter_map(|p| body.ear(p.id).map(|s| (p.id, s))).collect();
+    o.u16(ears.len() as u16);
+    for (id, s) in ears {
+        o.u32(id).u32(s);
+    }
+    o.0
+}
+
+fn welcome_payload(rt: &Runtime, granted: u32, clock: bool) -> Vec<u8> {
+    let robot = rt.vr.robot();
+    let model = robot.model().clone();
+    let (w, h) = (robot.camera().rgb.width, robot.camera().rgb.height);
+    let (frame, time_ms) = (robot.clock().frame(), robot.clock().time_ms());
+    drop(robot);
+    let design = model.design();
+    let mut o = Out::default();
+    o.u16(VERSION).u16(REVISION).u32(granted).u32(if clock { FLAG_CLOCK } else { 0 });
+    o.u32(8000).u32(frame).u64(time_ms);
+    o.u16(w as u16).u16(h as u16).u16(design.camera_fps() as u16);
+    o.u16(design.mic_period_frames() as u16).u16(MIC_BLOCK as u16).u32(16000).u16(2).u16(16);
+    o.str(design.name());
+    o.u16(model.primitives().len() as u16);
+    for p in model.primitives() {
+        let (min, max) = p.joint.map_or((0, 0), |j| (j.min, j.max));
+        o.u32(p.id).u16(class_of(p.kind)).i16(p.sensor_index.map_or(-1, |i| i as i16)).i32(min).i32(max).str(p.locator);
+    }
+    o.0
+}
+
+/// Binds the sockets of `opts` and serves them on threads of their own.
+pub fn serve(rt: &'static Runtime, opts: &PeerOptions) -> Result<()> {
+    let hub = &rt.vr.peers;
+    hub.wait.store(opts.wait, std::sync::atomic::Ordering::Release);
+    if opts.wait && opts.socket.is_none() && opts.tcp.is_none() {
+        return Err(ErrorKind::Runtime("--robot-wait needs --robot-socket or --robot-tcp".into()).into());
+    }
+    if let Some(path) = &opts.socket {
+        let _ = std::fs::remove_file(path);
+        let l = UnixListener::bind(path).map_err(|e| Error::io(path, e))?;
+        spawn_acceptor(rt, path, move || l.accept().map(|(s, _)| Conn::Unix(s)))?;
+        rt.diag.info(&format!("robot peers attach at {}", path.display()));
+    }
+    if let Some(addr) = opts.tcp {
+        if !addr.ip().is_loopback() {
+            return Err(ErrorKind::Runtime(format!("--robot-tcp {addr}: only loopback addresses (127.0.0.1, ::1) are allowed")).into());
+        }
+        let l = TcpListener::bind(addr).map_err(|e| ErrorKind::Runtime(format!("--robot-tcp {addr}: {e}")))?;
+        let bound = l.local_addr().map_or(addr.to_string(), |a| a.to_string());
+        spawn_acceptor(rt, Path::new(&bound), move || {
+            l.accept().map(|(s, _)| {
+                let _ = s.set_nodelay(true);
+                Conn::Tcp(s)
+            })
+        })?;
+        rt.diag.info(&format!("robot peers attach at tcp {bound}"));
+    }
+    Ok(())
+}
+
+fn spawn_acceptor(rt: &'static Runtime, what: &Path, accept: impl Fn() -> std::io::Result<Conn> + Send + 'static) -> Result<()> {
+    std::thread::Builder::new()
+        .name("openr-peer-listen".into())
+        .spawn(move || loop {
+            match accept() {
+                Ok(c) => {
+                    let _ = std::thread::Builder::new().name("openr-peer".into()).spawn(move || connection(rt, c));
+                }
+                Err(_) => std::thread::sleep(std::time::Duration::from_millis(10)),
+            }
+        })
+        .map_err(|e| Error::io(what, e))?;
+    Ok(())
+}
+
+/// Sends ERROR and closes.
+fn refuse(conn: &Mutex<Conn>, frame: u32, code: u16, text: &str, rt: &Runtime) {
+    rt.diag.warn(&format!("robot peer: {text} (error {code}; connection closed)"));
+    let mut c = conn.lock().unwrap_or_else(|p| p.into_inner());
+    let _ = c.write_all(&message(ERROR, frame, &error(code, text)));
+    c.shutdown();
+}
+
+/// One connection's reader thread.
+fn connection(rt: &'static Runtime, conn: Conn) {
+    let hub = &rt.vr.peers;
+    let Ok(mut reader) = conn.try_clone() else { return };
+    let mut reader = std::io::BufReader::new(&mut reader);
+    // Before HELLO the connection has no Peer: errors go straight to the socket.
+    let early = Mutex::new(conn);
+    let (header, payload) = match read_message(&mut reader) {
+        Ok(Some(Ok(m))) => m,
+        Ok(Some(Err(Refusal(code, text)))) => return refuse(&early, 0, code, &text, rt),
+        _ => return,
+    };
+    if header.kind != HELLO {
+        return refuse(&early, 0, E_BAD_STATE, &format!("the first message must be HELLO (type {HELLO}), not type {}", header.kind), rt);
+    }
+    let hello = match parse_hello(&payload) {
+        Ok(h) => h,
+        Err(e) => return refuse(&early, 0, E_BAD_PAYLOAD, &format!("HELLO: {e}"), rt),
+    };
+    let conn = early.into_inner().unwrap_or_else(|p| p.into_inner());
+    let peer = {
+        let mut st = hub.lock();
+        let id = st.next_id;
+        st.next_id += 1;
+        let mut granted = 0;
+        for bit in 0..ROLE_NAMES.len() {
+            if hello.roles & (1 << bit) != 0 && st.roles[bit].is_none() {
+                st.roles[bit] = Some(id);
+                granted |= 1 << bit;
+            }
+        }
+        let clock = hello.flags & FLAG_CLOCK != 0 && st.clock.is_none();
+        let name = if hello.name.is_empty() { format!("peer{id}") } else { hello.name.clone() };
+        let peer = Arc::new(Peer { id, name, roles: granted, writer: Mutex::new(conn) });
+        // WELCOME goes out before the peer is listed: no FRAME can precede it.
+        let welcome = welcome_payload(rt, granted, clock);
+        if peer.send(WELCOME, st.last_frame, &welcome).is_err() {
+            for r in st.roles.iter_mut() {
+                if *r == Some(id) {
+                    *r = None;
+                }
+            }
+            return;
+        }
+        if clock {
+            st.clock = Some(id);
+        }
+        st.peers.push(peer.clone());
+        hub.active.store(true, std::sync::atomic::Ordering::Release);
+        let roles: Vec<&str> = (0..ROLE_NAMES.len()).filter(|b| granted & (1 << b) != 0).map(|b| ROLE_NAMES[b]).collect();
+        rt.diag.info(&format!(
+            "robot peer `{}` attached after frame {} (roles: {}{})",
+            peer.name,
+            st.last_frame,
+            if roles.is_empty() { "none".to_string() } else { roles.join(", ") },
+            if clock { "; owns the clock" } else { "" }
+        ));
+        peer
+    };
+    hub.cv.notify_all();
+    let why = serve_peer(rt, &peer, &mut reader);
+    hub.detach(rt, peer.id, &why);
+}
+
+/// Reads a peer's messages until it leaves; returns why it left.
+fn serve_peer(rt: &Runtime, peer: &Peer, reader: &mut impl Read) -> String {
+    let hub = &rt.vr.peers;
+    let fail = |code: u16, text: String| -> String {
+        let frame = hub.lock().last_frame;
+        rt.diag.warn(&format!("robot peer `{}`: {text} (error {code}; connection closed)", peer.name));
+        let _ = peer.send(ERROR, frame, &error(code, &text));
+        format!("error {code}: {text}")
+    };
+    loop {
+        let (h, payload) = match read_message(reader) {
+            Ok(Some(Ok(m))) => m,
+            Ok(Some(Err(Refusal(code, text)))) => return fail(code, text),
+            Ok(None) => return "it closed the connection".into(),
+            Err(e) => return format!("connection lost: {e}"),
+        };
+        match h.kind {
+            READINGS => {
+                let r = match parse_readings(&payload) {
+                    Ok(r) => r,
+                    Err(e) => return fail(E_BAD_PAYLOAD, format!("READINGS: {e}")),
+                };
+                if let Err(e) = check_readings(rt, peer, &r) {
+                    return fail(e.0, e.1);
+                }
+                let mut st = hub.lock();
+                if st.clock == Some(peer.id) {
+                    match st.awaiting {
+                        Some((o, n)) if o == peer.id && n == h.frame => {
+                            st.lockstep = Some(r);
+                            st.awaiting = None;
+                            drop(st);
+                            hub.cv.notify_all();
+                        }
+                        Some((_, n)) => {
+                            drop(st);
+                            return fail(E_BAD_FRAME, format!("READINGS for frame {}, expected frame {n}", h.frame));
+                        }
+                        None => {
+                            let last = st.last_frame;
+                            drop(st);
+                            return fail(E_BAD_FRAME, format!("READINGS for frame {} while no frame awaits readings (last FRAME sent: {last})", h.frame));
+                        }
+                    }
+                } else {
+                    st.pending.push(r);
+                }
+            }
+            IMAGE => {
+                if peer.roles & ROLE_CAMERA == 0 {
+                    return fail(E_ROLE, "IMAGE without the camera role".into());
+                }
+                let robot = rt.vr.robot();
+                let (w, hh) = (robot.camera().rgb.width, robot.camera().rgb.height);
+                drop(robot);
+                let mut i = In::new(&payload);
+                let dims = (i.u16(), i.u16());
+                let rgb = i.rest();
+                match dims {
+                    (Ok(pw), Ok(ph)) if pw as usize == w && ph as usize == hh && rgb.len() == w * hh * 3 => {
+                        hub.lock().image = Some(rgb.to_vec());
+                    }
+                    _ => return fail(E_BAD_PAYLOAD, format!("IMAGE must be u16 width {w}, u16 height {hh}, then {} RGB bytes", w * hh * 3)),
+                }
+            }
+            MIC => {
+                if peer.roles & ROLE_MIC == 0 {
+                    return fail(E_ROLE, "MIC without the mic role".into());
+                }
+                if payload.len() % 4 != 0 {
+                    return fail(E_BAD_PAYLOAD, "MIC: 16-bit stereo PCM (a multiple of 4 bytes)".into());
+                }
+                let mut st = hub.lock();
+                if st.mic.len() + payload.len() > MIC_QUEUE_MAX {
+                    drop(st);
+                    return fail(E_OVERFLOW, format!("MIC: more than {MIC_QUEUE_MAX} bytes queued"));
+                }
+                st.mic.extend(payload.iter().copied());
+            }
+            CLOCK => {
+                let flags = match In::new(&payload).u32() {
+                    Ok(f) => f,
+                    Err(e) => return fail(E_BAD_PAYLOAD, format!("CLOCK: {e}")),
+                };
+                let mut st = hub.lock();
+                if flags & FLAG_CLOCK != 0 {
+                    if st.clock.is_none() {
+                        st.clock = Some(peer.id);
+                    }
+                } else if st.clock == Some(peer.id) {
+                    st.clock = None;
+                }
+                let owns = st.clock == Some(peer.id);
+                let frame = st.last_frame;
+                drop(st);
+                hub.cv.notify_all();
+                let mut o = Out::default();
+                o.u32(if owns { FLAG_CLOCK } else { 0 });
+                if peer.send(CLOCK, frame, &o.0).is_err() {
+                    return "the connection broke".into();
+                }
+            }
+            BYE => return "BYE".into(),
+            ERROR => {
+                let mut i = In::new(&payload);
+                let code = i.u16().unwrap_or(0);
+                let text = i.str().unwrap_or_default();
+                return format!("it reported error {code}: {text}");
+            }
+            HELLO => return fail(E_BAD_STATE, "HELLO twice".into()),
+            k => return fail(E_BAD_TYPE, format!("message type {k} is not accepted from a peer")),
+        }
+    }
+}
+
+/// Every primitive of a READINGS message is known and belongs to a role of the peer.
+fn check_readings(rt: &Runtime, peer: &Peer, r: &Readings) -> std::result::Result<(), (u16, String)> {
+    let robot = rt.vr.robot();
+    let model = robot.model();
+    for &(id, _) in r.joints.iter().chain(&r.sensors) {
+        let Some(p) = model.primitive(id) else {
+            return Err((E_BAD_PAYLOAD, format!("READINGS: unknown primitive ID {id:#x}")));
+        };
+        let Some(role) = role_of(p.kind) else {
+            return Err((E_BAD_PAYLOAD, format!("READINGS: {} ({id:#x}) has no readings", p.locator)));
+        };
+        let is_joint = r.joints.iter().any(|&(j, _)| j == id);
+        if is_joint != (role == ROLE_JOINTS) {
+            return Err((E_BAD_PAYLOAD, format!("READINGS: {} ({id:#x}) listed in the wrong section", p.locator)));
+        }
+        if peer.roles & role == 0 {
+            let name = ROLE_NAMES[role.trailing_zeros() as usize];
+            return Err((E_ROLE, format!("READINGS: {} needs the {name} role, which this peer does not hold", p.locator)));
+        }
+    }
+    Ok(())
+}
