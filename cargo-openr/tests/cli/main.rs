@@ -3,6 +3,7 @@ mod audio;
 mod camera;
 mod clock;
 mod corpus;
+mod front;
 mod net;
 mod robot;
 mod run;

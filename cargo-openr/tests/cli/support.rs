@@ -343,3 +343,8 @@ impl Drop for Running {
         }
     }
 }
+
+/// Runs `cargo-openr <args>` in `dir` with extra environment variables.
+pub fn cargo_openr_in(dir: &Path, args: &[&str], env: &[(&str, &str)]) -> Output {
+    Command::new(exe()).args(args).current_dir(dir).envs(env.iter().copied()).output().expect("run cargo-openr")
+}
