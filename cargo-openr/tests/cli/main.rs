@@ -5,6 +5,7 @@ mod clock;
 mod corpus;
 mod front;
 mod net;
+mod peer;
 mod robot;
 mod run;
 mod sdk;

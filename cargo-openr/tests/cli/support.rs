@@ -348,3 +348,27 @@ impl Drop for Running {
 pub fn cargo_openr_in(dir: &Path, args: &[&str], env: &[(&str, &str)]) -> Output {
     Command::new(exe()).args(args).current_dir(dir).envs(env.iter().copied()).output().expect("run cargo-openr")
 }
+
+/// Connects to a Unix socket the runtime is about to bind (retrying for `timeout`).
+pub fn connect_unix(path: &Path, timeout: std::time::Duration) -> std::os::unix::net::UnixStream {
+    let start = std::time::Instant::now();
+    loop {
+        match std::os::unix::net::UnixStream::connect(path) {
+            Ok(s) => return s,
+            Err(_) if start.elapsed() < timeout => std::thread::sleep(std::time::Duration::from_millis(10)),
+            Err(e) => panic!("cannot connect to {}: {e}", path.display()),
+        }
+    }
+}
+
+/// Waits until `path` exists (a socket the runtime binds), at most `timeout`.
+pub fn wait_for_path(path: &Path, timeout: std::time::Duration) -> bool {
+    let start = std::time::Instant::now();
+    while !path.exists() {
+        if start.elapsed() > timeout {
+            return false;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    true
+}

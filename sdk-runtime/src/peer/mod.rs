@@ -504,7 +504,10 @@ fn serve_peer(rt: &Runtime, peer: &Peer, reader: &mut impl Read) -> String {
     let fail = |code: u16, text: String| -> String {
         let frame = hub.lock().last_frame;
         rt.diag.warn(&format!("robot peer `{}`: {text} (error {code}; connection closed)", peer.name));
-        let _ = peer.send(ERROR, frame, &error(code, &text));
+        // ERROR and the shutdown under one lock: no FRAME can follow the ERROR.
+        let mut w = peer.writer.lock().unwrap_or_else(|p| p.into_inner());
+        let _ = w.write_all(&message(ERROR, frame, &error(code, &text)));
+        w.shutdown();
         format!("error {code}: {text}")
     };
     loop {

@@ -1,0 +1,320 @@
+//! The external robot protocol (docs/robot-protocol.md): peers attached on
+//! `--robot-socket` drive the clock in lockstep, supply joint readings, may come and go
+//! without the runtime losing a frame, and bad input gets an ERROR and a closed
+//! connection while the robot keeps running. Unix sockets in temp dirs only.
+use std::collections::HashMap;
+use std::io::{Read, Write};
+use std::os::unix::net::UnixStream;
+use std::path::Path;
+use std::process::Command;
+use std::time::Duration;
+
+use serde_json::Value;
+
+use crate::support::{build, connect_unix, read_trace, repo, spawn_ms, wait_for_path, RunOutput};
+
+const HELLO: u16 = 1;
+const WELCOME: u16 = 2;
+const FRAME: u16 = 3;
+const READINGS: u16 = 4;
+const ERROR: u16 = 10;
+const ROLE_JOINTS: u32 = 1;
+const FLAG_CLOCK: u32 = 1;
+const LF_J1: &str = "PRM:/r2/c1-Joint2:21";
+
+fn message(kind: u16, version: u16, length: u32, frame: u32, payload: &[u8]) -> Vec<u8> {
+    let mut m = b"ORP1".to_vec();
+    m.extend_from_slice(&version.to_le_bytes());
+    m.extend_from_slice(&kind.to_le_bytes());
+    m.extend_from_slice(&length.to_le_bytes());
+    m.extend_from_slice(&frame.to_le_bytes());
+    m.extend_from_slice(payload);
+    m
+}
+
+fn send(s: &mut UnixStream, kind: u16, frame: u32, payload: &[u8]) {
+    s.write_all(&message(kind, 1, payload.len() as u32, frame, payload)).unwrap();
+}
+
+/// The next message, or None at the end of the stream.
+fn recv(s: &mut UnixStream) -> Option<(u16, u32, Vec<u8>)> {
+    let mut h = [0u8; 16];
+    if s.read_exact(&mut h).is_err() {
+        return None;
+    }
+    assert_eq!(&h[..4], b"ORP1");
+    assert_eq!(u16::from_le_bytes([h[4], h[5]]), 1);
+    let kind = u16::from_le_bytes([h[6], h[7]]);
+    let len = u32::from_le_bytes([h[8], h[9], h[10], h[11]]) as usize;
+    let frame = u32::from_le_bytes([h[12], h[13], h[14], h[15]]);
+    let mut p = vec![0u8; len];
+    s.read_exact(&mut p).unwrap();
+    Some((kind, frame, p))
+}
+
+fn hello(roles: u32, flags: u32) -> Vec<u8> {
+    let mut p = Vec::new();
+    p.extend_from_slice(&roles.to_le_bytes());
+    p.extend_from_slice(&flags.to_le_bytes());
+    p.extend_from_slice(&4u16.to_le_bytes());
+    p.extend_from_slice(b"test");
+    p
+}
+
+fn u16_at(p: &[u8], i: usize) -> u16 {
+    u16::from_le_bytes([p[i], p[i + 1]])
+}
+fn u32_at(p: &[u8], i: usize) -> u32 {
+    u32::from_le_bytes([p[i], p[i + 1], p[i + 2], p[i + 3]])
+}
+
+/// The WELCOME's primitive table: locator → ID.
+fn welcome_ids(p: &[u8]) -> HashMap<String, u32> {
+    let mut i = 2 + 2 + 4 + 4 + 4 + 4 + 8 + 6 + 2 + 2 + 4 + 2 + 2;
+    let n = u16_at(p, i) as usize;
+    i += 2 + n;
+    let count = u16_at(p, i);
+    i += 2;
+    let mut ids = HashMap::new();
+    for _ in 0..count {
+        let id = u32_at(p, i);
+        i += 4 + 2 + 2 + 4 + 4;
+        let n = u16_at(p, i) as usize;
+        ids.insert(String::from_utf8(p[i + 2..i + 2 + n].to_vec()).unwrap(), id);
+        i += 2 + n;
+    }
+    ids
+}
+
+/// A FRAME's joints: (ID, target µrad) and its flags.
+fn frame_joints(p: &[u8]) -> (u8, Vec<(u32, i32)>) {
+    let n = u16_at(p, 12) as usize;
+    (p[8], (0..n).map(|k| (u32_at(p, 14 + 20 * k), u32_at(p, 18 + 20 * k) as i32)).collect())
+}
+
+fn readings(joints: &[(u32, i32)]) -> Vec<u8> {
+    let mut p = (joints.len() as u16).to_le_bytes().to_vec();
+    for (id, v) in joints {
+        p.extend_from_slice(&id.to_le_bytes());
+        p.extend_from_slice(&v.to_le_bytes());
+    }
+    p.extend_from_slice(&0u16.to_le_bytes());
+    p
+}
+
+fn deg(urad: i64) -> f64 {
+    urad as f64 / 1e6 * 180.0 / std::f64::consts::PI
+}
+
+fn sensors(trace: &[Value]) -> Vec<&Value> {
+    trace.iter().filter(|r| r["kind"] == "sensor").collect()
+}
+
+fn first_frame(r: &Value) -> u64 {
+    r["first_frame"].as_u64().unwrap()
+}
+
+/// The sensor records cover every frame: first_frame 1, 5, 9, … without a gap.
+fn assert_no_gaps(trace: &[Value], frames: u64) {
+    let firsts: Vec<u64> = sensors(trace).iter().map(|r| first_frame(r)).collect();
+    let expected: Vec<u64> = (0..frames / 4).map(|k| 1 + 4 * k).collect();
+    assert_eq!(firsts, expected, "sensor vectors must cover frames 1..{frames} without a gap");
+}
+
+/// A lockstep run of movelegs with tools/robot_peer.py attached from the start:
+/// (stdout, trace text, the peer's WELCOME line, its recorded FRAMEs).
+fn python_lockstep_run(dir: &Path, tag: &str, secs: u32) -> (RunOutput, String, Value, Vec<Value>) {
+    let b = build("movelegs");
+    let sock = dir.join(format!("{tag}.sock"));
+    let trace = dir.join(format!("{tag}.jsonl"));
+    let record = dir.join(format!("{tag}-frames.jsonl"));
+    let for_arg = format!("{secs}s");
+    let run = spawn_ms(
+        &b.ms(),
+        &["--speed", "max", "--for", &for_arg, "--trace", trace.to_str().unwrap(), "--robot-socket", sock.to_str().unwrap(), "--robot-wait"],
+        &[],
+    );
+    assert!(wait_for_path(&sock, Duration::from_secs(60)), "no robot socket");
+    let peer = Command::new("python3")
+        .arg(repo().join("tools/robot_peer.py"))
+        .arg(&sock)
+        .args(["--record", record.to_str().unwrap()])
+        .output()
+        .expect("python3");
+    let out = run.wait(Duration::from_secs(120));
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(peer.status.success(), "peer failed: {}", String::from_utf8_lossy(&peer.stderr));
+    let welcome: Value = serde_json::from_str(String::from_utf8_lossy(&peer.stdout).lines().next().unwrap()).unwrap();
+    let frames = read_trace(&record);
+    (out, std::fs::read_to_string(&trace).unwrap(), welcome, frames)
+}
+
+#[test]
+fn lockstep_python_peer_drives_the_clock_and_supplies_the_joint_angles() {
+    let dir = tempfile::tempdir().unwrap();
+    let (out, trace_text, welcome, frames) = python_lockstep_run(dir.path(), "a", 3);
+    assert_eq!(welcome["design"], "ERS-7");
+    assert_eq!(welcome["clock"], true);
+    assert_eq!(welcome["camera_width"], 416);
+    assert_eq!(welcome["primitives"].as_array().unwrap().iter().filter(|p| p["class"] == "joint").count(), 18);
+    // 3 s of virtual time = 375 frames, each sent exactly once, in order
+    let numbers: Vec<u64> = frames.iter().map(|f| f["frame"].as_u64().unwrap()).collect();
+    assert_eq!(numbers, (1..=375).collect::<Vec<u64>>());
+    assert!(frames.iter().all(|f| f["readings_expected"] == true));
+    assert!(out.stderr.contains("375 frames"), "{}", out.stderr);
+    let locator: HashMap<u64, String> = welcome["primitives"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| (p["id"].as_u64().unwrap(), p["locator"].as_str().unwrap().to_string()))
+        .collect();
+    // the trace's joint readings are the targets the peer echoed back (newest frame of each vector)
+    let trace: Vec<Value> = trace_text.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_no_gaps(&trace, 375);
+    for s in sensors(&trace) {
+        let newest = &frames[(first_frame(s) + 3 - 1) as usize];
+        for j in newest["joints"].as_array().unwrap() {
+            let loc = &locator[&j["id"].as_u64().unwrap()];
+            let want = deg(j["target"].as_i64().unwrap());
+            let got = s["joints"][loc.as_str()].as_f64().unwrap();
+            assert!((got - want).abs() < 0.002, "frame {}: {loc} reads {got}, the peer reported {want}", first_frame(s) + 3);
+        }
+    }
+    // ... and so are the angles the program prints (whole degrees, truncated)
+    let lines = out.lines_starting("Sensors : frame");
+    assert!(lines.len() >= 10, "{}", out.stdout);
+    let lf: Vec<u64> = ["PRM:/r2/c1-Joint2:21", "PRM:/r2/c1/c2-Joint2:22", "PRM:/r2/c1/c2/c3-Joint2:23"]
+        .iter()
+        .map(|l| *locator.iter().find(|(_, v)| v == l).unwrap().0)
+        .collect();
+    for l in lines {
+        let w: Vec<&str> = l.split_whitespace().collect();
+        let n: usize = w[3].parse().unwrap();
+        let f = &frames[n - 1];
+        for (k, id) in [6, 8, 10].into_iter().zip(&lf) {
+            let j = f["joints"].as_array().unwrap().iter().find(|j| j["id"].as_u64() == Some(*id)).unwrap();
+            let printed: i64 = w[k].parse().unwrap();
+            assert_eq!(printed, deg(j["target"].as_i64().unwrap()).trunc() as i64, "{l}");
+        }
+    }
+}
+
+#[test]
+fn lockstep_runs_with_the_same_peer_are_byte_identical() {
+    let dir = tempfile::tempdir().unwrap();
+    let (out1, trace1, _, frames1) = python_lockstep_run(dir.path(), "r1", 2);
+    let (out2, trace2, _, frames2) = python_lockstep_run(dir.path(), "r2", 2);
+    assert_eq!(frames1.len(), 250);
+    assert!(trace1 == trace2, "same trace, byte for byte");
+    assert_eq!(out1.stdout, out2.stdout);
+    assert_eq!(frames1, frames2, "same FRAMEs sent");
+}
+
+#[test]
+fn a_peer_attaching_mid_run_and_leaving_loses_no_frame() {
+    let b = build("movelegs");
+    let dir = tempfile::tempdir().unwrap();
+    let sock = dir.path().join("robot.sock");
+    let trace = dir.path().join("trace.jsonl");
+    let run = spawn_ms(
+        &b.ms(),
+        &["--speed", "4", "--for", "6s", "--trace", trace.to_str().unwrap(), "--robot-socket", sock.to_str().unwrap()],
+        &[],
+    );
+    let mut s = connect_unix(&sock, Duration::from_secs(60));
+    std::thread::sleep(Duration::from_millis(300)); // let the robot run first
+    s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    send(&mut s, HELLO, 0, &hello(ROLE_JOINTS, FLAG_CLOCK));
+    let (kind, _, w) = recv(&mut s).unwrap();
+    assert_eq!(kind, WELCOME);
+    assert_eq!(u32_at(&w, 4), ROLE_JOINTS, "joints granted");
+    assert_eq!(u32_at(&w, 8), FLAG_CLOCK, "clock granted");
+    let j1 = welcome_ids(&w)[LF_J1];
+    // hold the left front J1 at 0 rad for 100 frames whatever the program commands
+    let mut got = Vec::new();
+    while got.len() < 100 {
+        let (kind, n, p) = recv(&mut s).expect("FRAME");
+        assert_eq!(kind, FRAME);
+        assert!(frame_joints(&p).0 & 8 != 0, "READINGS expected from the clock owner");
+        got.push(n as u64);
+        send(&mut s, READINGS, n, &readings(&[(j1, 0)]));
+    }
+    drop(s); // gone without BYE
+    let out = run.wait(Duration::from_secs(120));
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    let (first, last) = (got[0], got[99]);
+    assert!(first > 1, "attached mid-run (frame {first})");
+    assert_eq!(got, (first..=last).collect::<Vec<u64>>(), "consecutive FRAMEs");
+    let trace = read_trace(&trace);
+    assert_no_gaps(&trace, 750);
+    let j1_at = |r: &Value| r["joints"][LF_J1].as_f64().unwrap();
+    let recs = sensors(&trace);
+    let held: Vec<_> = recs.iter().filter(|r| (first..=last).contains(&(first_frame(r) + 3))).collect();
+    assert!(held.len() >= 20);
+    assert!(held.iter().all(|r| j1_at(r) == 0.0), "the peer's reading replaces the model's");
+    assert!(recs.iter().any(|r| first_frame(r) + 3 < first && j1_at(r) != 0.0), "built-in before");
+    // after it left, the built-in servo continues from where the peer left the joint
+    let after: Vec<_> = recs.iter().filter(|r| first_frame(r) + 3 > last).collect();
+    assert!(j1_at(after[0]).abs() < 25.0, "continues from 0: {}", j1_at(after[0]));
+    assert!(after.iter().any(|r| j1_at(r).abs() > 5.0), "and follows the commands again");
+}
+
+/// Connects, optionally says HELLO, sends `bytes`, expects an ERROR with `code` and EOF.
+fn expect_error(sock: &Path, greet: Option<(u32, u32)>, bytes: &[u8], code: u16) {
+    let mut s = connect_unix(sock, Duration::from_secs(60));
+    s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    if let Some((roles, flags)) = greet {
+        send(&mut s, HELLO, 0, &hello(roles, flags));
+        assert_eq!(recv(&mut s).unwrap().0, WELCOME);
+    }
+    s.write_all(bytes).unwrap();
+    loop {
+        let (kind, _, p) = recv(&mut s).unwrap_or_else(|| panic!("no ERROR {code}"));
+        if kind == ERROR {
+            assert_eq!(u16_at(&p, 0), code, "{}", String::from_utf8_lossy(&p[4..]));
+            break;
+        }
+        assert_eq!(kind, FRAME, "only FRAMEs before the ERROR");
+    }
+    // then the connection is closed: only FRAMEs already in flight can't follow an ERROR
+    let mut rest = Vec::new();
+    let _ = s.read_to_end(&mut rest);
+    assert!(rest.is_empty(), "nothing after the ERROR ({} bytes)", rest.len());
+}
+
+#[test]
+fn bad_input_gets_an_error_and_a_closed_connection_and_the_robot_runs_on() {
+    let b = build("movelegs");
+    let dir = tempfile::tempdir().unwrap();
+    let sock = dir.path().join("robot.sock");
+    let run = spawn_ms(&b.ms(), &["--speed", "1", "--for", "4s", "--robot-socket", sock.to_str().unwrap()], &[]);
+    // malformed header (no magic) before HELLO
+    expect_error(&sock, None, b"GARBAGE-GARBAGE!", 1);
+    // wrong version, after HELLO
+    expect_error(&sock, Some((0, 0)), &message(READINGS, 7, 0, 0, &[]), 2);
+    // oversized length
+    expect_error(&sock, Some((0, 0)), &message(READINGS, 1, u32::MAX, 0, &[]), 3);
+    // anything but HELLO first
+    expect_error(&sock, None, &message(READINGS, 1, 4, 0, &[0, 0, 0, 0]), 7);
+    // a truncated HELLO
+    expect_error(&sock, None, &message(HELLO, 1, 2, 0, &[1, 0]), 5);
+    // an unknown message type
+    expect_error(&sock, Some((0, 0)), &message(99, 1, 0, 0, &[]), 4);
+    // READINGS for the wrong frame from the clock owner
+    {
+        let mut s = connect_unix(&sock, Duration::from_secs(60));
+        s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+        send(&mut s, HELLO, 0, &hello(ROLE_JOINTS, FLAG_CLOCK));
+        assert_eq!(recv(&mut s).unwrap().0, WELCOME);
+        let (kind, n, _) = recv(&mut s).unwrap();
+        assert_eq!(kind, FRAME);
+        send(&mut s, READINGS, n + 5, &readings(&[]));
+        let (kind, _, p) = recv(&mut s).unwrap();
+        assert_eq!((kind, u16_at(&p, 0)), (ERROR, 6), "{}", String::from_utf8_lossy(&p));
+        assert!(recv(&mut s).is_none(), "closed after the ERROR");
+    }
+    let out = run.wait(Duration::from_secs(60));
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stderr.contains("500 frames"), "every frame ran: {}", out.stderr);
+    assert!(out.stdout.contains("MovingLegs : "), "{}", out.stdout);
+}
