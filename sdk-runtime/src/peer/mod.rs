@@ -638,3 +638,78 @@ fn check_readings(rt: &Runtime, peer: &Peer, r: &Readings) -> std::result::Resul
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::robot::model::Design;
+
+    fn robot() -> VirtualRobot {
+        VirtualRobot::new(Design::Ers7)
+    }
+
+    #[test]
+    fn readings_replace_joint_angles_and_sensors_until_released() {
+        let mut r = robot();
+        let j = r.open_primitive("PRM:/r2/c1-Joint2:21").unwrap();
+        let acc = r.open_primitive("PRM:/a1-Sensor:a1").unwrap();
+        let chin = r.open_primitive("PRM:/r2/c1/c2/c3/c4-Sensor:24").ok();
+        assert!(chin.is_some());
+        for _ in 0..3 {
+            r.step_frame();
+        }
+        let p = r.begin_frame();
+        assert_eq!(p.frame(), 4);
+        assert!(p.sensor_due());
+        let payload = frame_payload(&r, &p);
+        assert_eq!(payload.len(), 8 + 4 + 2 + 18 * 20 + 2 + 8 * payload_count(&payload, 1) + 2 + 8 * payload_count(&payload, 2));
+        let mut sensors = vec![(acc, 1_234_567)];
+        if let Some(c) = chin {
+            sensors.push((c, 1));
+        }
+        let inbound = Inbound { readings: vec![Readings { joints: vec![(j, 300_000)], sensors }], image: None, released: 0 };
+        inbound.apply(&mut r);
+        let out = r.end_frame(p);
+        assert_eq!(r.joint_value(j).unwrap().value, 300_000);
+        assert_eq!(r.sensor_value(acc).unwrap().value, 1_234_567);
+        assert!(out.sensor_vector.is_some());
+        // the built-in servo continues from the reported angle; the override stays
+        r.step_frame();
+        assert_eq!(r.sensor_value(acc).unwrap().value, 1_234_567);
+        // released: synthesized again (gravity on a3 only when lying)
+        let p = r.begin_frame();
+        Inbound { readings: vec![], image: None, released: ROLE_ACCEL }.apply(&mut r);
+        r.end_frame(p);
+        assert_ne!(r.sensor_value(acc).unwrap().value, 1_234_567);
+        assert_eq!(r.apply_readings(&Readings { joints: vec![(acc, 0)], sensors: vec![] }), Err(acc));
+    }
+
+    /// LED (which = 1) or ear (which = 2) count of a FRAME payload.
+    fn payload_count(p: &[u8], which: usize) -> usize {
+        let joints = u16::from_le_bytes([p[12], p[13]]) as usize;
+        let at = 14 + joints * 20;
+        let leds = u16::from_le_bytes([p[at], p[at + 1]]) as usize;
+        if which == 1 {
+            return leds;
+        }
+        let at = at + 2 + leds * 8;
+        u16::from_le_bytes([p[at], p[at + 1]]) as usize
+    }
+
+    #[test]
+    fn an_outside_picture_becomes_the_camera_image() {
+        let mut r = robot();
+        let (w, h) = (r.camera().rgb.width, r.camera().rgb.height);
+        assert!(r.set_camera_rgb(Some(vec![0; 10])).is_err());
+        let pink = [250u8, 90, 160].repeat(w * h);
+        Inbound { readings: vec![], image: Some(pink.clone()), released: 0 }.apply(&mut r);
+        let mut img = Vec::new();
+        r.render_image(1, &mut img);
+        assert_eq!(img.len(), r.image_layout().size());
+        let centre = r.camera_rgb().pixel(w / 2, h / 2);
+        assert_eq!(centre, [250, 90, 160]);
+        Inbound { readings: vec![], image: None, released: ROLE_CAMERA }.apply(&mut r);
+        r.render_image(2, &mut img);
+        assert_ne!(r.camera_rgb().data, pink, "the scene again");
+    }
+}
