@@ -5,9 +5,9 @@ use std::time::Duration;
 use anyhow::Context;
 use openr_wrappers::install;
 use sdk_runtime::boot::{self, Ended, RunOptions};
-use sdk_runtime::clock::Speed;
 use sdk_runtime::runtime::Diag;
 
+use crate::ops::config::{self, ConfigInputs};
 use crate::shell::Shell;
 
 #[derive(Debug, clap::Args)]
@@ -18,15 +18,15 @@ pub struct Args {
     /// Stop cleanly after this much virtual time (e.g. 5s, 250ms, 2m)
     #[arg(long = "for", value_name = "DURATION", value_parser = parse_duration)]
     run_for: Option<Duration>,
-    /// Robot design: selects [ERS-…] sections of the CFG files and GetRobotDesign()
-    #[arg(long, default_value = "ERS-7")]
-    design: String,
+    /// Robot design: selects [ERS-…] sections of the CFG files and GetRobotDesign() (default ERS-7; see `cargo openr config`)
+    #[arg(long)]
+    design: Option<String>,
     /// Skip CONNECT.CFG lines that name unknown services (the robot's behaviour) instead of failing
     #[arg(long)]
     lenient_connect: bool,
     /// Virtual-time speed: a factor of real time (1 = real time, 4, 0.5) or `max` (as fast as the objects keep up)
-    #[arg(long, default_value = "1", value_parser = parse_speed)]
-    speed: Speed,
+    #[arg(long)]
+    speed: Option<String>,
     /// Serve pause / resume / step / speed / status commands on this Unix socket
     #[arg(long, value_name = "PATH")]
     control: Option<PathBuf>,
@@ -76,10 +76,6 @@ fn parse_loopback(s: &str) -> Result<std::net::SocketAddr, String> {
     Ok(a)
 }
 
-fn parse_speed(s: &str) -> Result<Speed, String> {
-    s.parse()
-}
-
 /// `5s`, `250ms`, `2m`, `1h`, or plain seconds (`1.5`).
 pub fn parse_duration(s: &str) -> Result<Duration, String> {
     let s = s.trim();
@@ -101,14 +97,10 @@ pub fn parse_duration(s: &str) -> Result<Duration, String> {
     Ok(Duration::from_secs_f64(v * mult))
 }
 
-/// The SDK root whose system objects this run loads: `--sdk`, else `$OPENRSDK_ROOT` when
-/// it is one of ours, else the per-user default; installed or updated if needed.
-fn sdk_root(explicit: Option<PathBuf>) -> anyhow::Result<PathBuf> {
-    let env = std::env::var_os("OPENRSDK_ROOT").map(PathBuf::from).filter(|p| install::is_sdk_root(p));
-    let root = match explicit.or(env) {
-        Some(p) => p,
-        None => install::default_prefix().context("cannot find a home directory; pass --sdk DIR")?,
-    };
+/// The SDK root whose system objects this run loads, as `ops::config` resolves it
+/// (`--sdk`, `$OPENRSDK_ROOT` when it is one of ours, `openr.toml`, the per-user
+/// default); installed or updated if needed.
+fn sdk_root(root: PathBuf) -> anyhow::Result<PathBuf> {
     let exe = std::env::current_exe().context("cannot locate the cargo-openr executable")?;
     install::install(&root, &exe).with_context(|| format!("cannot prepare the SDK root {}", root.display()))?;
     Ok(root)
@@ -116,18 +108,20 @@ fn sdk_root(explicit: Option<PathBuf>) -> anyhow::Result<PathBuf> {
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     sdk_runtime::net::config::apply_cli(args.net_bind, args.port_offset);
-    let root = sdk_root(args.sdk.clone())?;
+    let project = args.ms_dir.parent().map(PathBuf::from);
+    let cfg = config::resolve(&ConfigInputs { sdk: args.sdk.clone(), design: args.design.clone(), speed: args.speed.clone(), project })?;
+    let root = sdk_root(cfg.sdk.value)?;
     let opts = RunOptions {
         system_objects: install::system_objects(&root),
         trace: args.trace.clone(),
-        speed: args.speed,
+        speed: cfg.speed.value,
         speaker_wav: args.speaker_wav.clone(),
         mic_wav: args.mic_wav.clone(),
         images: args.images.clone(),
         control: args.control.clone(),
         peers: sdk_runtime::peer::PeerOptions { socket: args.robot_socket.clone(), tcp: args.robot_tcp, wait: args.robot_wait },
         ms_dir: args.ms_dir.clone(),
-        design: args.design,
+        design: cfg.design.value,
         run_for: args.run_for,
         diag: Diag { quiet: args.quiet, verbose: args.verbose },
         lenient_connect: args.lenient_connect,

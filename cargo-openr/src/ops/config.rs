@@ -124,6 +124,7 @@ fn strip_comment(line: &str) -> &str {
 
 /// The `openr.toml` of the project at `dir` (or of its nearest parent that has one).
 pub fn find_project_file(dir: &Path) -> Option<PathBuf> {
+    let dir = if dir.as_os_str().is_empty() { Path::new(".") } else { dir };
     let abs = std::path::absolute(dir).ok()?;
     abs.ancestors().map(|d| d.join(PROJECT_FILE)).find(|p| p.is_file())
 }
