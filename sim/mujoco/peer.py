@@ -229,6 +229,16 @@ class Bridge:
                 self.paws.append((pid, PAWS[num]))
             elif loc in PSDS:
                 self.psds.append((pid,) + PSDS[loc])
+        # send only what the runtime granted (a role held by another peer is an error)
+        granted = set(welcome["roles"])
+        if "joints" not in granted:
+            self.joints = {}
+        if "accel" not in granted:
+            self.accel = []
+        if "switches" not in granted:
+            self.paws = []
+        if "psd" not in granted:
+            self.psds = []
         self.started = False
 
     def start(self, frame):
