@@ -8,6 +8,7 @@ mod net;
 mod peer;
 mod robot;
 mod run;
+mod rust_objects;
 mod sdk;
 mod support;
 mod tools;

@@ -1,0 +1,134 @@
+//! The runtime's table (`openr_runtime_api_v1`, found with `dlsym(RTLD_DEFAULT)` as the
+//! C++ archives do) and thin safe wrappers over the calls this crate makes.
+use std::ffi::{c_void, CStr};
+use std::sync::OnceLock;
+
+use crate::abi::{self, openr_host_api, OServiceEntry};
+
+struct Api(&'static openr_host_api);
+// SAFETY: the table is immutable and lives as long as the process.
+unsafe impl Send for Api {}
+unsafe impl Sync for Api {}
+
+/// The runtime's table, `None` when the object runs outside cargo-openr.
+pub(crate) fn api() -> Option<&'static openr_host_api> {
+    static API: OnceLock<Option<Api>> = OnceLock::new();
+    API.get_or_init(|| {
+        // SAFETY: dlsym with a NUL-terminated name; the symbol, if present, is the
+        // runtime's `struct openr_host_api`, valid for the life of the process.
+        let p = unsafe { libc_dlsym(c"openr_runtime_api_v1") };
+        if p.is_null() {
+            return None;
+        }
+        let table = unsafe { &*(p as *const openr_host_api) };
+        (table.abi_version == abi::HOST_ABI_VERSION && table.size as usize >= std::mem::size_of::<openr_host_api>())
+            .then_some(Api(table))
+    })
+    .as_ref()
+    .map(|a| a.0)
+}
+
+extern "C" {
+    fn dlsym(handle: *mut c_void, symbol: *const std::ffi::c_char) -> *mut c_void;
+}
+
+unsafe fn libc_dlsym(name: &CStr) -> *mut c_void {
+    // RTLD_DEFAULT is ((void*)0) on glibc.
+    unsafe { dlsym(std::ptr::null_mut(), name.as_ptr()) }
+}
+
+/// The calling object's OID address.
+pub(crate) fn self_oid() -> *mut c_void {
+    match api() {
+        Some(a) => unsafe { (a.self_oid)() },
+        None => std::ptr::null_mut(),
+    }
+}
+
+/// Sends `msg` (a whole protocol struct) to `dest`. False if the runtime refused.
+pub(crate) fn send<T: Copy>(dest: OServiceEntry, msg: &T) -> bool {
+    let Some(a) = api() else { return false };
+    // SAFETY: `msg` is a live repr(C) struct of size_of::<T>() bytes; the runtime copies it.
+    unsafe { (a.send)(dest.oid, dest.selector, (msg as *const T).cast(), std::mem::size_of::<T>()) == 0 }
+}
+
+/// Replies to the call being processed.
+pub(crate) fn reply<T: Copy>(msg: &T) {
+    if let Some(a) = api() {
+        // SAFETY: as in `send`.
+        unsafe { (a.reply)((msg as *const T).cast(), std::mem::size_of::<T>()) };
+    }
+}
+
+/// Calls `dest` and reads a reply of type `R`; `Err(code)` with the host's code
+/// (-1 unknown, -2 self, -3 timeout), or -4 for a short reply.
+pub(crate) fn call<T: Copy, R: Copy>(dest: OServiceEntry, msg: &T, timeout_ms: u32) -> Result<R, i32> {
+    let Some(a) = api() else { return Err(-1) };
+    let mut out = std::mem::MaybeUninit::<R>::zeroed();
+    let mut got = 0usize;
+    // SAFETY: `out` has room for size_of::<R>() bytes; the runtime writes at most that.
+    let rc = unsafe {
+        (a.call)(dest.oid, dest.selector, (msg as *const T).cast(), std::mem::size_of::<T>(),
+                 out.as_mut_ptr().cast(), std::mem::size_of::<R>(), &mut got, timeout_ms)
+    };
+    if rc != 0 {
+        return Err(rc);
+    }
+    if got < std::mem::size_of::<R>() {
+        return Err(-4);
+    }
+    // SAFETY: zeroed then filled; plain integer/pointer struct.
+    Ok(unsafe { out.assume_init() })
+}
+
+/// Registers `name` at (self, selector): 0 ok, 1 already registered, -1 no runtime.
+pub(crate) fn register_service(name: &str, selector: u32) -> i32 {
+    let Some(a) = api() else { return -1 };
+    let Ok(c) = std::ffi::CString::new(name) else { return -1 };
+    unsafe { (a.register_service)(c.as_ptr(), self_oid(), selector) }
+}
+
+pub(crate) fn unregister_services() {
+    if let Some(a) = api() {
+        unsafe { (a.unregister_services)() };
+    }
+}
+
+/// Writes to the console in one piece (stdout without a runtime).
+pub(crate) fn console_write(text: &[u8]) {
+    match api() {
+        Some(a) => unsafe { (a.console_write)(text.as_ptr().cast(), text.len()) },
+        None => {
+            use std::io::Write;
+            let mut out = std::io::stdout().lock();
+            let _ = out.write_all(text);
+            let _ = out.flush();
+        }
+    }
+}
+
+pub(crate) fn shm_alloc(size: usize) -> Option<(u32, *mut u8)> {
+    let a = api()?;
+    let mut id = 0;
+    let p = unsafe { (a.shm_alloc)(size, &mut id) };
+    (!p.is_null()).then_some((id, p.cast()))
+}
+
+pub(crate) fn shm_base(id: u32) -> Option<(*mut u8, usize)> {
+    let a = api()?;
+    let mut size = 0;
+    let p = unsafe { (a.shm_base)(id, &mut size) };
+    (!p.is_null()).then_some((p.cast(), size))
+}
+
+pub(crate) fn shm_ref(id: u32) {
+    if let Some(a) = api() {
+        unsafe { (a.shm_ref)(id) };
+    }
+}
+
+pub(crate) fn shm_unref(id: u32) {
+    if let Some(a) = api() {
+        unsafe { (a.shm_unref)(id) };
+    }
+}
