@@ -17,6 +17,8 @@ pub struct Cli {
 pub enum Command {
     /// Materialise the OPEN-R SDK root (headers, mipsel-linux-* wrappers, mkbin, stubgen2)
     Sdk(commands::sdk::Args),
+    /// Build a project's C++ and Rust objects into its MS/ tree (incremental, no make)
+    Build(commands::build::Args),
     /// Run a Memory Stick tree (MS/) on the host: load its objects and boot them
     Run(commands::run::Args),
     /// Measure the runtime (message round trip, throughput, cold start) against the machine's limit
@@ -39,6 +41,7 @@ pub fn run(args: Vec<OsString>, shell: &mut Shell) -> anyhow::Result<()> {
     let cli = Cli::try_parse_from(args).unwrap_or_else(|e| e.exit());
     match cli.command {
         Command::Sdk(a) => commands::sdk::exec(a, shell),
+        Command::Build(a) => commands::build::exec(a, shell),
         Command::Run(a) => commands::run::exec(a, shell),
         Command::Bench(a) => commands::bench::exec(a, shell),
         Command::New(a) => commands::new::exec(a, shell),

@@ -1,4 +1,5 @@
 pub mod bench;
+pub mod build;
 pub mod check;
 pub mod config;
 pub mod doctor;

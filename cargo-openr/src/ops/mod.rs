@@ -1,5 +1,6 @@
 //! Operations behind the subcommands that are not library calls of their own.
 pub mod bench;
+pub mod build;
 pub mod check;
 pub mod config;
 pub mod diag;

@@ -1,5 +1,6 @@
 //! Integration tests of the `cargo-openr` binary: one test binary, a module per area.
 mod audio;
+mod build;
 mod camera;
 mod clock;
 mod corpus;

@@ -1,0 +1,72 @@
+//! `cargo openr build [--release] [--message-format json] [-p OBJECT]... [--path DIR]`
+use std::path::PathBuf;
+
+use anyhow::Context;
+use openr_wrappers::install;
+use serde_json::json;
+
+use crate::ops::build::{self, BuildOptions, Event};
+use crate::ops::config::{self, ConfigInputs};
+use crate::ops::diag::MessageFormat;
+use crate::shell::Shell;
+
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The project directory (default: the current directory)
+    #[arg(long, value_name = "DIR", default_value = ".")]
+    path: PathBuf,
+    /// Build the Rust objects with `cargo build --release`
+    #[arg(long)]
+    release: bool,
+    /// Build only this object (its stub.cfg ObjectName or cargo package name); repeatable
+    #[arg(short = 'p', long = "package", value_name = "OBJECT")]
+    packages: Vec<String>,
+    /// SDK root (default: see `cargo openr config`; installed on first use)
+    #[arg(long, value_name = "DIR")]
+    sdk: Option<PathBuf>,
+    /// `human` (status lines on stderr) or `json` (one object per line on stdout)
+    #[arg(long, value_enum, default_value_t)]
+    message_format: MessageFormat,
+}
+
+pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
+    let cfg = config::resolve(&ConfigInputs { sdk: args.sdk, project: Some(args.path.clone()), ..Default::default() })?;
+    let root = cfg.sdk.value;
+    let exe = std::env::current_exe().context("cannot locate the cargo-openr executable")?;
+    install::install(&root, &exe).with_context(|| format!("cannot prepare the SDK root {}", root.display()))?;
+    let opts = BuildOptions { dir: args.path.clone(), sdk: root, release: args.release, packages: args.packages };
+    let json = args.message_format == MessageFormat::Json;
+    let mut emit = |e: Event| match (&e, json) {
+        (Event::Compiling { object, kind }, false) => shell.status("Compiling", &format!("{object} ({})", kind.label())),
+        (Event::Compiling { object, kind }, true) => {
+            shell.out(&json!({ "reason": "compiling", "package_id": object, "kind": kind.label() }).to_string())
+        }
+        (Event::Artifact { .. }, false) => {}
+        (Event::Artifact { object, kind, bin, fresh }, true) => shell.out(
+            &json!({ "reason": "compiler-artifact", "package_id": object, "kind": kind.label(), "filenames": [bin], "fresh": fresh })
+                .to_string(),
+        ),
+        (Event::Message { rendered, .. }, false) => eprint!("{rendered}"),
+        (Event::Message { object, level, rendered }, true) => shell.out(
+            &json!({ "reason": "compiler-message", "package_id": object, "message": { "level": level, "rendered": rendered } })
+                .to_string(),
+        ),
+    };
+    let result = build::build(&opts, &mut emit);
+    let ok = result.is_ok();
+    if json {
+        shell.out(&json!({ "reason": "build-finished", "success": ok }).to_string());
+    }
+    let report = result?;
+    let profile = if args.release { "release" } else { "dev" };
+    shell.status(
+        "Finished",
+        &format!(
+            "`{profile}` profile: {} object(s), {} compiled, in {:.2}s",
+            report.objects,
+            report.compiled,
+            report.elapsed.as_secs_f64()
+        ),
+    );
+    Ok(())
+}
