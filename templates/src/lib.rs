@@ -98,8 +98,29 @@ pub mod new {
         ],
     };
 
+    /// A Rust subject (a `cdylib` using the `openr` crate, built by `cargo openr build`)
+    /// sending strings to a C++ observer.
+    pub const RUST_OBJECT: Template = Template {
+        name: "rust-object",
+        about: "a Rust object (openr crate) sending strings to a C++ observer; build with `cargo openr build`",
+        // The C++ observer first: it is the object with a Makefile.
+        objects: &["observer", "subject"],
+        files: &[
+            COMMON[3], COMMON[4],
+            file!("{{subject.class}}/Cargo.toml", "rust-object/Cargo.toml.hbs"),
+            file!("{{subject.class}}/src/lib.rs", "rust-object/lib.rs.hbs"),
+            file!("{{observer.class}}/Makefile", "rust-object/observer.Makefile.hbs"),
+            file!("{{observer.class}}/{{observer.target}}.ocf", "rust-object/observer.ocf.hbs"),
+            file!("{{observer.class}}/stub.cfg", "subject-observer/observer.stub.cfg.hbs"),
+            file!("{{observer.class}}/{{observer.class}}.h", "subject-observer/observer.h.hbs"),
+            file!("{{observer.class}}/{{observer.class}}.cc", "subject-observer/observer.cc.hbs"),
+            file!("MS/OPEN-R/MW/CONF/CONNECT.CFG", "subject-observer/CONNECT.CFG.hbs"),
+            file!("README.md", "rust-object/README.hbs"),
+        ],
+    };
+
     /// Every template, the default first.
-    pub const TEMPLATES: &[Template] = &[HELLO, SUBJECT_OBSERVER, WALK];
+    pub const TEMPLATES: &[Template] = &[HELLO, SUBJECT_OBSERVER, WALK, RUST_OBJECT];
 
     /// The template called `name`.
     pub fn find(name: &str) -> Option<&'static Template> {

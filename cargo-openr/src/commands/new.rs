@@ -1,4 +1,4 @@
-//! `cargo openr new <name> [--template hello|subject-observer|walk] [--path DIR]`
+//! `cargo openr new <name> [--template hello|subject-observer|walk|rust-object] [--path DIR]`
 use std::path::PathBuf;
 
 use crate::ops::new::{self, NewOptions};
@@ -9,7 +9,7 @@ pub struct Args {
     /// Project name: letters, digits, `-`, `_`; gives the object classes (`my-dog` → MyDog) and .BIN names (MYDOG.BIN)
     name: String,
     /// Project template
-    #[arg(long, default_value = "hello", value_parser = clap::builder::PossibleValuesParser::new(["hello", "subject-observer", "walk"]))]
+    #[arg(long, default_value = "hello", value_parser = clap::builder::PossibleValuesParser::new(["hello", "subject-observer", "walk", "rust-object"]))]
     template: String,
     /// Directory to create (default: ./<name>); must not exist or be empty
     #[arg(long, value_name = "DIR")]

@@ -17,7 +17,7 @@ use serde::Serialize;
 pub struct NewOptions {
     /// The project name (`my-dog`): names the directory and, CamelCased, the objects.
     pub name: String,
-    /// `hello`, `subject-observer` or `walk`.
+    /// `hello`, `subject-observer`, `walk` or `rust-object`.
     pub template: String,
     /// The directory to create (default: `./<name>`).
     pub path: PathBuf,
@@ -145,6 +145,15 @@ struct Context<'a> {
     subject: Option<&'a ObjectNames>,
     #[serde(skip_serializing_if = "Option::is_none")]
     observer: Option<&'a ObjectNames>,
+    /// The `openr` crate of this checkout (Rust objects depend on it by path).
+    openr_path: String,
+}
+
+/// The `openr` crate of the checkout this binary was built from (there is no crates.io
+/// release yet): `<repo>/openr`, absolute.
+pub fn openr_crate_path() -> PathBuf {
+    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("../openr");
+    p.canonicalize().unwrap_or(p)
 }
 
 /// Renders every file of the template: `(path relative to the project, contents)`.
@@ -157,7 +166,8 @@ pub fn render(name: &str, template: &Template, objects: &[ObjectNames]) -> Resul
     for file in template.files {
         let targets: Vec<&ObjectNames> = if file.per_object { objects.iter().collect() } else { vec![&objects[0]] };
         for obj in targets {
-            let ctx = Context { name, objects, obj, subject: role("subject"), observer: role("observer") };
+            let openr_path = openr_crate_path().display().to_string();
+            let ctx = Context { name, objects, obj, subject: role("subject"), observer: role("observer"), openr_path };
             let r = |t: &str| hb.render_template(t, &ctx).map_err(|e| NewError::Render(format!("{}: {e}", file.path)));
             out.push((PathBuf::from(r(file.path)?), r(file.source)?));
         }

@@ -1,4 +1,4 @@
-//! `cargo openr build`: every `new` template builds without make and runs; no-op and
+//! `cargo openr build`: every `new` template (hello, subject-observer, walk, rust-object) builds without make and runs; no-op and
 //! touched rebuilds; `compile_commands.json` replays; JSON lines; compiler errors.
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -118,4 +118,25 @@ fn compile_error_shows_file_and_line_and_fails() {
         String::from_utf8_lossy(&out.stdout).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
     assert!(lines.iter().any(|v| v["reason"] == "compiler-message" && v["message"]["rendered"].as_str().unwrap().contains("undeclared_thing")));
     assert_eq!(lines.last().unwrap()["success"], false);
+}
+
+#[test]
+fn rust_object_template_builds_and_runs() {
+    let (_tmp, dir, first) = new_and_build("rust-object");
+    assert!(dir.join("MS/OPEN-R/MW/OBJS/TESTDOGS.BIN").is_file() && dir.join("MS/OPEN-R/MW/OBJS/TESTDOGO.BIN").is_file());
+    assert!(compiling_lines(&first).contains(&"   Compiling TestDogObserver (C++)".to_string()), "{}", text(&first));
+    let stdout = run_1s(&dir);
+    let received: Vec<&str> = stdout.lines().filter(|l| l.starts_with("TestDogObserver : received")).collect();
+    assert_eq!(
+        received,
+        (1..=3).map(|i| format!("TestDogObserver : received \"hello {i} from TestDogSubject\"")).collect::<Vec<_>>(),
+        "{stdout}"
+    );
+    let again = build(&dir, &["--message-format", "json"]);
+    assert!(again.status.success(), "{}", text(&again));
+    assert!(compiling_lines(&again).is_empty(), "{}", text(&again));
+    for l in String::from_utf8_lossy(&again.stdout).lines() {
+        let v: serde_json::Value = serde_json::from_str(l).unwrap_or_else(|e| panic!("not JSON: {l}: {e}"));
+        assert_ne!(v["reason"], "compiling", "{l}");
+    }
 }
