@@ -182,7 +182,7 @@ pub fn build(opts: &BuildOptions, emit: &mut dyn FnMut(Event)) -> anyhow::Result
     for o in &objects {
         let did = match o.kind {
             Kind::Cxx => build_cxx(opts, &dir, o, &objs_dir, &mut commands, emit)?,
-            Kind::Rust => build_rust(opts, o, &objs_dir, emit)?,
+            Kind::Rust => build_rust(opts, &dir, o, &objs_dir, emit)?,
         };
         compiled += did as usize;
     }
@@ -354,7 +354,7 @@ fn gzip(from: &Path, to: &Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn build_rust(opts: &BuildOptions, o: &Object, objs_dir: &Path, emit: &mut dyn FnMut(Event)) -> anyhow::Result<bool> {
+fn build_rust(opts: &BuildOptions, project: &Path, o: &Object, objs_dir: &Path, emit: &mut dyn FnMut(Event)) -> anyhow::Result<bool> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut cmd = Command::new(cargo);
     cmd.args(["build", "--quiet", "--message-format=json-render-diagnostics", "--manifest-path"]).arg(o.dir.join("Cargo.toml"));
@@ -386,9 +386,16 @@ fn build_rust(opts: &BuildOptions, o: &Object, objs_dir: &Path, emit: &mut dyn F
     }
     let so = so.with_context(|| format!("cargo built no cdylib for `{}`", o.name))?;
     let installed = objs_dir.join(&o.bin);
-    let fresh = !stale(&installed, std::slice::from_ref(&so));
+    // Which .so the installed .BIN came from: a profile switch (--release) installs the
+    // other profile's .so even when it is older than the .BIN.
+    let stamp_dir = project.join("target/openr").join(&o.name);
+    fs::create_dir_all(&stamp_dir)?;
+    let stamp_path = stamp_dir.join("installed-from");
+    let stamp = format!("{}\n{:?}\n", so.display(), mtime(&so));
+    let fresh = !stale(&installed, std::slice::from_ref(&so)) && fs::read_to_string(&stamp_path).ok().as_deref() == Some(stamp.as_str());
     if !fresh {
         gzip(&so, &installed)?;
+        fs::write(&stamp_path, &stamp)?;
     }
     emit(Event::Artifact { object: o.name.clone(), kind: Kind::Rust, bin: installed, fresh: fresh && !compiled });
     Ok(compiled)
