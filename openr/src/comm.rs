@@ -184,6 +184,7 @@ impl SubjectState {
         let n = (msg.num_of_data.max(0) as usize).min(abi::MAX_NUM_DATA);
         for &token in &msg.rc_region[..n] {
             if !token.is_null() {
+                crate::shm::token_returned(token as usize as u32);
                 host::shm_unref(token as usize as u32);
             }
         }

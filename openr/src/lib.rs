@@ -40,6 +40,7 @@ pub mod console;
 mod host;
 mod object;
 mod payload;
+pub mod robot;
 mod shm;
 
 pub use comm::{observer_selectors, subject_selectors, MAX_OBSERVERS, MAX_SUBJECTS};

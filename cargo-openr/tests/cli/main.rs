@@ -10,6 +10,7 @@ mod peer;
 mod robot;
 mod run;
 mod rust_objects;
+mod rust_robot;
 mod sdk;
 mod support;
 mod tools;
