@@ -110,7 +110,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     let signals = crate::signals::block_termination()?;
     crate::crash::install();
     // Objects' printf/cout go through C stdio: line-buffer it like a console.
-    unsafe { libc::setvbuf(stdout_ptr(), std::ptr::null_mut(), libc::_IOLBF, 0) };
+    unsafe { libc::setvbuf(crate::console::stdout_file(), std::ptr::null_mut(), libc::_IOLBF, 0) };
     std::hint::black_box(crate::host_api::api_table());
     std::hint::black_box(crate::interpose::keep());
 
@@ -201,13 +201,6 @@ fn tempdir() -> Result<Scratch> {
     let dir = base.join(format!("cargo-openr-{}", std::process::id()));
     std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
     Ok(Scratch(dir))
-}
-
-fn stdout_ptr() -> *mut libc::FILE {
-    extern "C" {
-        static mut stdout: *mut libc::FILE;
-    }
-    unsafe { stdout }
 }
 
 fn with_cfg_line(e: Error, cfg: &std::path::Path, line: usize) -> Error {

@@ -8,8 +8,9 @@ static LOCK: Mutex<()> = Mutex::new(());
 /// Writes `bytes` to fd 1 in one piece (retrying on short writes while holding the lock).
 pub fn write(bytes: &[u8]) {
     let _guard = LOCK.lock().unwrap_or_else(|p| p.into_inner());
-    // Flush what C stdio (printf/cout of objects) buffered first, so order is kept.
-    unsafe { libc::fflush(std::ptr::null_mut()) };
+    // Flush what C stdio (printf/cout of objects) buffered for the console first, so
+    // order is kept; other streams (objects' open files) are not the console's business.
+    unsafe { libc::fflush(stdout_file()) };
     let mut rest = bytes;
     while !rest.is_empty() {
         let n = unsafe { libc::write(1, rest.as_ptr().cast(), rest.len()) };
@@ -21,4 +22,13 @@ pub fn write(bytes: &[u8]) {
         }
         rest = &rest[n as usize..];
     }
+}
+
+/// C stdio's `stdout` (objects' printf/cout write there).
+pub fn stdout_file() -> *mut libc::FILE {
+    extern "C" {
+        static mut stdout: *mut libc::FILE;
+    }
+    // SAFETY: glibc's `stdout` is initialised before main and never reassigned here.
+    unsafe { stdout }
 }

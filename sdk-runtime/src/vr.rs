@@ -159,7 +159,7 @@ impl VrService {
             }
         }
         if let Some(vector) = out.sensor_vector {
-            self.publish(rt, SERVICE_SENSOR, vector);
+            self.publish_slice(rt, SERVICE_SENSOR, &vector);
         }
         if out.camera_due && self.camera_wanted.load(std::sync::atomic::Ordering::Acquire) {
             let mut img = self.image.lock().unwrap_or_else(|p| p.into_inner());
@@ -181,9 +181,9 @@ impl VrService {
             } else {
                 self.mic.lock().unwrap_or_else(|p| p.into_inner()).next_block()
             };
-            let mic_id = self.robot().open_primitive("PRM:/r1/c1/c2/c3/m1-Mic:M1").unwrap_or(0);
+            let mic_id = self.robot().primitive_of(crate::robot::model::Part::Mic).unwrap_or(0);
             if let Ok(v) = vectors::build_mic_vector(mic_id, out.frame, &block) {
-                self.publish(rt, SERVICE_MIC, v);
+                self.publish_slice(rt, SERVICE_MIC, &v);
             }
         }
         if let Some(t) = &self.trace {
@@ -192,10 +192,6 @@ impl VrService {
                 let _ = writeln!(w, "{}", r.to_json());
             }
         }
-    }
-
-    fn publish(&self, rt: &Runtime, service: usize, vector: Vec<u8>) {
-        self.publish_slice(rt, service, &vector);
     }
 
     /// Copies a finished vector into a new shared region (the one copy of its data flow:

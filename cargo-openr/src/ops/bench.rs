@@ -54,6 +54,11 @@ fn fields(out: &str, prefix: &str) -> Vec<(String, f64)> {
         .collect()
 }
 
+/// The value of `key` among `fields`, or an error quoting the program's output.
+fn field(fields: &[(String, f64)], key: &str, out: &str) -> Result<f64> {
+    fields.iter().find(|(n, _)| n == key).map(|(_, v)| *v).with_context(|| format!("no {key} in:\n{out}"))
+}
+
 fn monotonic_ns() -> i64 {
     let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
     unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC, &mut ts) };
@@ -116,7 +121,7 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path) -> Result<Vec<
     let ms = build(&programs.join("pingpong"), work, root)?;
     let out = run_ms(exe, &ms, root)?;
     let f = fields(&out, "BENCH pingpong");
-    let get = |k: &str| f.iter().find(|(n, _)| n == k).map(|(_, v)| *v).with_context(|| format!("no {k} in:\n{out}"));
+    let get = |k: &str| field(&f, k, &out);
     fig("notify→ready round trip p50 (2 objects)", get("p50_ns")? / 1000.0, "µs");
     fig("notify→ready round trip p99 (2 objects)", get("p99_ns")? / 1000.0, "µs");
     fig("object messages per second", get("msgs_per_sec")?, "msg/s");
@@ -152,7 +157,7 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path) -> Result<Vec<
     let ms = build(&programs.join("sensorjitter"), work, root)?;
     let out = run_ms(exe, &ms, root)?;
     let f = fields(&out, "BENCH jitter");
-    let get = |k: &str| f.iter().find(|(n, _)| n == k).map(|(_, v)| *v).with_context(|| format!("no {k} in:\n{out}"));
+    let get = |k: &str| field(&f, k, &out);
     fig("sensor period jitter |Δt − 32 ms| p50 (real time, 1000 vectors)", get("p50_ns")? / 1000.0, "µs");
     fig("sensor period jitter |Δt − 32 ms| p99", get("p99_ns")? / 1000.0, "µs");
 
