@@ -1,5 +1,6 @@
-//! Embeds the SDK-root payload (`include/` headers and the `cxx/` C++ surface) so the
-//! single `cargo-openr` binary can materialise an SDK root anywhere.
+//! Embeds the SDK-root payload (`include/` headers, the `cxx/` C++ surface, and the
+//! MuJoCo simulator `../sim/mujoco` with its protocol codec `../tools/robot_peer.py`) so
+//! the single `cargo-openr` binary can materialise an SDK root anywhere.
 use std::{env, fs, path::Path};
 
 fn collect(root: &Path, dir: &Path, out: &mut Vec<(String, String)>) {
@@ -18,12 +19,19 @@ fn collect(root: &Path, dir: &Path, out: &mut Vec<(String, String)>) {
 fn main() {
     let manifest = env::var("CARGO_MANIFEST_DIR").unwrap();
     let mut code = String::new();
-    for (name, sub) in [("INCLUDE", "include"), ("CXX", "cxx")] {
+    for (name, sub) in [("INCLUDE", "include"), ("CXX", "cxx"), ("SIM", "../sim/mujoco")] {
         let dir = Path::new(&manifest).join(sub);
         println!("cargo:rerun-if-changed={}", dir.display());
         let mut files = Vec::new();
         if dir.is_dir() {
             collect(&dir, &dir, &mut files);
+        }
+        if name == "SIM" {
+            // The simulator only: Python sources and MuJoCo models, not the notes or caches.
+            files.retain(|(rel, _)| !rel.contains('/') && (rel.ends_with(".py") || rel.ends_with(".xml")));
+            let codec = Path::new(&manifest).join("../tools/robot_peer.py");
+            println!("cargo:rerun-if-changed={}", codec.display());
+            files.push(("robot_peer.py".into(), codec.canonicalize().unwrap().to_string_lossy().into_owned()));
         }
         code.push_str(&format!("pub static {name}: &[(&str, &[u8])] = &[\n"));
         for (rel, abs) in files {

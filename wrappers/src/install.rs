@@ -8,6 +8,7 @@
 //! <root>/OPEN_R/lib/lib*.a       the runtime's C++ surface, compiled here with host g++
 //! <root>/OPEN_R/src/**           its sources, for debuggers
 //! <root>/OPEN_R/MS_ERS7/...      Memory Stick base trees
+//! <root>/sim/mujoco/*.py,*.xml   the MuJoCo simulator peer (`cargo openr run --sim mujoco`)
 //! ```
 //!
 //! The tree is built beside the destination and swapped in with renames, so an
@@ -27,6 +28,9 @@ use crate::TOOLS;
 
 /// File whose presence marks a directory as a cargo-openr SDK root; holds the payload hash.
 pub const STAMP: &str = ".cargo-openr-sdk";
+
+/// Where the MuJoCo simulator (peer.py, ers7.xml, scene.xml, …) lives in an SDK root.
+pub const SIM_DIR: &str = "sim/mujoco";
 
 /// What `install` did.
 #[derive(Debug, PartialEq, Eq)]
@@ -123,7 +127,7 @@ fn is_empty_dir(p: &Path) -> bool {
 fn payload_hash(exe: &[u8]) -> String {
     let mut h = DefaultHasher::new();
     exe.hash(&mut h);
-    for (p, b) in sdk_files::INCLUDE.iter().chain(sdk_files::CXX) {
+    for (p, b) in sdk_files::INCLUDE.iter().chain(sdk_files::CXX).chain(sdk_files::SIM) {
         p.hash(&mut h);
         b.hash(&mut h);
     }
@@ -154,6 +158,7 @@ fn build_tree(root: &Path, exe: &[u8], stamp: &str) -> Result<(), Error> {
     let src = root.join("OPEN_R/src");
     write_files(&include, sdk_files::INCLUDE)?;
     write_files(&src, sdk_files::CXX)?;
+    write_files(&root.join(SIM_DIR), sdk_files::SIM)?;
     install_tools(root, exe)?;
     build_archives(root, &include, &src)?;
     build_system_objects(root, &include, &src)?;

@@ -1,5 +1,6 @@
 //! `cargo openr run <MS dir>`: boot a Memory Stick tree on the host.
-use std::path::PathBuf;
+use std::ffi::OsString;
+use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use anyhow::Context;
@@ -8,13 +9,29 @@ use sdk_runtime::boot::{self, Ended, RunOptions};
 use sdk_runtime::runtime::Diag;
 
 use crate::ops::config::{self, ConfigInputs};
+use crate::ops::sim;
 use crate::shell::Shell;
 
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// The Memory Stick directory (the one containing OPEN-R/)
-    #[arg(value_name = "MS_DIR")]
-    ms_dir: PathBuf,
+    /// The Memory Stick directory (the one containing OPEN-R/); with --sim mujoco, one per robot
+    #[arg(value_name = "MS_DIR", required = true, num_args = 1..)]
+    ms_dirs: Vec<PathBuf>,
+    /// Simulator: the built-in kinematic ERS-7, or `mujoco` (physics, cameras rendered from a 3-D scene; needs `tools/deps.sh --mujoco`)
+    #[arg(long, value_enum, default_value_t = Sim::Builtin)]
+    sim: Sim,
+    /// MuJoCo scene: field, objects and `start<k>` sites for the robots (default: the SDK root's sim/mujoco/scene.xml)
+    #[arg(long, value_name = "FILE")]
+    scene: Option<PathBuf>,
+    /// Robots in the MuJoCo world, each running its own runtime (default: one per MS_DIR; extra robots run the last MS_DIR)
+    #[arg(long, value_name = "N")]
+    robots: Option<usize>,
+    /// Seed of the simulator's sensor noise (same seed, programs and scene: the same run, byte for byte)
+    #[arg(long, value_name = "N")]
+    seed: Option<u64>,
+    /// Pass an option to the MuJoCo peer (see sim/mujoco/peer.py --help), e.g. --sim-arg=--ball=0.3,0
+    #[arg(long = "sim-arg", value_name = "ARG", allow_hyphen_values = true)]
+    sim_args: Vec<String>,
     /// Stop cleanly after this much virtual time (e.g. 5s, 250ms, 2m)
     #[arg(long = "for", value_name = "DURATION", value_parser = parse_duration)]
     run_for: Option<Duration>,
@@ -68,6 +85,14 @@ pub struct Args {
     port_offset: u16,
 }
 
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Sim {
+    /// the kinematic ERS-7 of the runtime (no install)
+    Builtin,
+    /// MuJoCo physics (sim/mujoco)
+    Mujoco,
+}
+
 fn parse_loopback(s: &str) -> Result<std::net::SocketAddr, String> {
     let a: std::net::SocketAddr = s.parse().map_err(|_| format!("`{s}` is not an address (try 127.0.0.1:7700)"))?;
     if !a.ip().is_loopback() {
@@ -107,10 +132,15 @@ fn sdk_root(root: PathBuf) -> anyhow::Result<PathBuf> {
 }
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
-    sdk_runtime::net::config::apply_cli(args.net_bind, args.port_offset);
-    let project = args.ms_dir.parent().map(PathBuf::from);
+    check_sim_options(&args)?;
+    let ms_dir = args.ms_dirs[0].clone();
+    let project = ms_dir.parent().map(PathBuf::from);
     let cfg = config::resolve(&ConfigInputs { sdk: args.sdk.clone(), design: args.design.clone(), speed: args.speed.clone(), project })?;
     let root = sdk_root(cfg.sdk.value)?;
+    if args.sim == Sim::Mujoco {
+        return simulate(&args, &root, shell);
+    }
+    sdk_runtime::net::config::apply_cli(args.net_bind, args.port_offset);
     let opts = RunOptions {
         system_objects: install::system_objects(&root),
         trace: args.trace.clone(),
@@ -120,16 +150,16 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         images: args.images.clone(),
         control: args.control.clone(),
         peers: sdk_runtime::peer::PeerOptions { socket: args.robot_socket.clone(), tcp: args.robot_tcp, wait: args.robot_wait },
-        ms_dir: args.ms_dir.clone(),
+        ms_dir: ms_dir.clone(),
         design: cfg.design.value,
         run_for: args.run_for,
         diag: Diag { quiet: args.quiet, verbose: args.verbose },
         lenient_connect: args.lenient_connect,
     };
     if !args.quiet {
-        shell.status("Running", &args.ms_dir.display().to_string());
+        shell.status("Running", &ms_dir.display().to_string());
     }
-    let outcome = boot::run(&opts).with_context(|| format!("cannot run {}", args.ms_dir.display()))?;
+    let outcome = boot::run(&opts).with_context(|| format!("cannot run {}", ms_dir.display()))?;
     if !args.quiet {
         let how = match outcome.ended {
             Ended::TimeUp => "time limit reached".to_string(),
@@ -138,10 +168,114 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         };
         shell.status(
             "Finished",
-            &format!("{} ({how}; {} frames, {} late)", args.ms_dir.display(), outcome.frames, outcome.late_frames),
+            &format!("{} ({how}; {} frames, {} late)", ms_dir.display(), outcome.frames, outcome.late_frames),
         );
     }
     Ok(())
+}
+
+/// Options that only make sense with the MuJoCo simulator, and those it owns itself.
+fn check_sim_options(args: &Args) -> anyhow::Result<()> {
+    if args.sim != Sim::Mujoco {
+        let given = [
+            (args.ms_dirs.len() > 1, "several MS_DIRs"),
+            (args.scene.is_some(), "--scene"),
+            (args.robots.is_some(), "--robots"),
+            (args.seed.is_some(), "--seed"),
+            (!args.sim_args.is_empty(), "--sim-arg"),
+        ];
+        if let Some((_, what)) = given.iter().find(|(g, _)| *g) {
+            anyhow::bail!("{what} needs a simulated world: add `--sim mujoco`");
+        }
+        return Ok(());
+    }
+    if args.robot_socket.is_some() || args.robot_tcp.is_some() || args.robot_wait {
+        anyhow::bail!("--sim mujoco attaches the simulator itself: drop --robot-socket/--robot-tcp/--robot-wait");
+    }
+    let robots = args.robots.unwrap_or(args.ms_dirs.len());
+    if robots < args.ms_dirs.len() || robots == 0 || robots > 30 {
+        anyhow::bail!("--robots {robots}: give 1 to 30 robots, at least one per MS_DIR ({} given)", args.ms_dirs.len());
+    }
+    if let Some(scene) = &args.scene {
+        if !scene.is_file() {
+            anyhow::bail!("--scene {}: no such file", scene.display());
+        }
+    }
+    Ok(())
+}
+
+/// `--sim mujoco`: robot k runs MS_DIR k (the last one for the rest) in its own
+/// runtime; the peer in the SDK root simulates them all.
+fn simulate(args: &Args, root: &Path, shell: &mut Shell) -> anyhow::Result<()> {
+    let robots = args.robots.unwrap_or(args.ms_dirs.len());
+    let base_ip = args.net_bind.unwrap_or(std::net::Ipv4Addr::LOCALHOST);
+    let mut plans = Vec::new();
+    for k in 0..robots {
+        let ms = &args.ms_dirs[k.min(args.ms_dirs.len() - 1)];
+        let mut a: Vec<OsString> = vec![ms.into(), "--sdk".into(), root.into()];
+        let mut opt = |name: &str, v: Option<OsString>| {
+            if let Some(v) = v {
+                a.push(name.into());
+                a.push(v);
+            }
+        };
+        opt("--for", args.run_for.map(|d| format!("{}ms", d.as_millis()).into()));
+        opt("--design", args.design.clone().map(Into::into));
+        opt("--speed", args.speed.clone().map(Into::into));
+        opt("--trace", args.trace.as_ref().map(|t| per_robot(t, k, robots).into()));
+        opt("--images", args.images.clone().map(Into::into));
+        // The world's pause button and the sound files belong to robot 0: pausing one
+        // runtime holds the lockstep of all.
+        if k == 0 {
+            opt("--control", args.control.clone().map(Into::into));
+            opt("--speaker-wav", args.speaker_wav.clone().map(Into::into));
+            opt("--mic-wav", args.mic_wav.clone().map(Into::into));
+        }
+        // Each robot its own address on loopback (127.0.0.1, .2, …), same ports.
+        let ip = u32::from(base_ip).checked_add(k as u32).map(std::net::Ipv4Addr::from);
+        let Some(ip) = ip.filter(|ip| ip.is_loopback() == base_ip.is_loopback()) else {
+            anyhow::bail!("--net-bind {base_ip}: no room for {robots} consecutive robot addresses");
+        };
+        opt("--net-bind", Some(ip.to_string().into()));
+        opt("--port-offset", (args.port_offset != 0).then(|| args.port_offset.to_string().into()));
+        for (on, flag) in [(args.lenient_connect, "--lenient-connect"), (args.quiet, "--quiet"), (args.verbose, "--verbose")] {
+            if on {
+                a.push(flag.into());
+            }
+        }
+        plans.push(a);
+    }
+    let mut peer_args: Vec<OsString> = Vec::new();
+    if let Some(scene) = &args.scene {
+        peer_args.extend(["--scene".into(), scene.into()]);
+    }
+    peer_args.extend(["--seed".into(), args.seed.unwrap_or(0).to_string().into()]);
+    if args.images.is_some() {
+        peer_args.push("--no-camera".into()); // the runtime's --images are the camera
+    }
+    if args.quiet {
+        peer_args.push("--quiet".into());
+    }
+    peer_args.extend(args.sim_args.iter().map(Into::into));
+    let plan = sim::Plan { python: sim::python(), peer: root.join(install::SIM_DIR).join("peer.py"), peer_args, robots: plans };
+    if !args.quiet {
+        let what = if robots == 1 { "1 robot".to_string() } else { format!("{robots} robots") };
+        shell.status("Simulating", &format!("{} in MuJoCo ({what})", args.ms_dirs[0].display()));
+    }
+    sim::run(&plan)
+}
+
+/// `t.jsonl` for robot 0 and a single robot, `t.r1.jsonl` for robot 1, …
+fn per_robot(path: &Path, k: usize, robots: usize) -> PathBuf {
+    if robots == 1 || k == 0 {
+        return path.to_path_buf();
+    }
+    let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    let name = match path.extension() {
+        Some(e) => format!("{stem}.r{k}.{}", e.to_string_lossy()),
+        None => format!("{stem}.r{k}"),
+    };
+    path.with_file_name(name)
 }
 
 #[cfg(test)]

@@ -7,3 +7,4 @@ pub mod diag;
 pub mod doctor;
 pub mod env;
 pub mod new;
+pub mod sim;

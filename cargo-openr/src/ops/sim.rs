@@ -1,0 +1,186 @@
+//! `cargo openr run --sim mujoco`: one runtime process per robot (each its own address
+//! space, symbol namespace and /MS), all attached to one MuJoCo peer that owns their
+//! clocks in lockstep and simulates them in one shared world.
+use std::ffi::OsString;
+use std::io::{BufRead, BufReader, Read, Write};
+use std::os::unix::process::CommandExt;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, ExitStatus, Stdio};
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+use anyhow::{bail, Context};
+
+/// The MuJoCo release the simulator is written and measured against (`tools/deps.sh` installs it).
+pub const MUJOCO_VERSION: &str = "4.0.0";
+
+/// The Python that runs the simulator: `$OPENR_PYTHON`, else the venv `tools/deps.sh`
+/// makes (`~/.cache/cargo-openr/mujoco-venv`), else `python3` from PATH.
+pub fn python() -> PathBuf {
+    if let Some(p) = std::env::var_os("OPENR_PYTHON").filter(|p| !p.is_empty()) {
+        return PathBuf::from(p);
+    }
+    let venv = std::env::var_os("XDG_CACHE_HOME")
+        .filter(|v| !v.is_empty())
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cache")))
+        .map(|c| c.join("cargo-openr/mujoco-venv/bin/python"));
+    match venv {
+        Some(v) if v.is_file() => v,
+        _ => PathBuf::from("python3"),
+    }
+}
+
+/// The GL backend MuJoCo renders with: `$MUJOCO_GL`, else EGL (headless Mesa).
+pub fn gl_backend() -> String {
+    std::env::var("MUJOCO_GL").ok().filter(|v| !v.is_empty()).unwrap_or_else(|| "egl".into())
+}
+
+/// Imports mujoco and renders one tiny image offscreen: `mujoco X.Y.Z` when both work,
+/// else what failed (the last line Python printed).
+pub fn probe(python: &Path) -> Result<String, String> {
+    const SCRIPT: &str = "import mujoco\n\
+        m = mujoco.MjModel.from_xml_string('<mujoco><worldbody><geom size=\"1\"/></worldbody></mujoco>')\n\
+        r = mujoco.Renderer(m, 8, 8); r.update_scene(mujoco.MjData(m)); r.render(); r.close()\n\
+        print(mujoco.__version__)\n";
+    let out = Command::new(python).args(["-c", SCRIPT]).env("MUJOCO_GL", gl_backend()).output();
+    match out {
+        Err(e) => Err(format!("cannot run {}: {e}", python.display())),
+        Ok(o) if o.status.success() => Ok(format!("mujoco {}", String::from_utf8_lossy(&o.stdout).trim())),
+        Ok(o) => {
+            let err = String::from_utf8_lossy(&o.stderr);
+            let last = err.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("failed").trim().to_string();
+            Err(last)
+        }
+    }
+}
+
+/// What to start: the peer (script and options) and, per robot, the `run` arguments of
+/// its runtime (without the robot socket, which is added here).
+pub struct Plan {
+    pub python: PathBuf,
+    pub peer: PathBuf,
+    pub peer_args: Vec<OsString>,
+    pub robots: Vec<Vec<OsString>>,
+}
+
+/// Runs the world until every runtime has ended; fails if a runtime or the peer failed.
+pub fn run(plan: &Plan) -> anyhow::Result<()> {
+    if let Err(why) = probe(&plan.python) {
+        bail!(
+            "the MuJoCo simulator cannot start: {} (MUJOCO_GL={}): {why}\n\
+             help: install it with `tools/deps.sh --mujoco` (pip mujoco=={MUJOCO_VERSION} in a venv, apt libegl1 libgl1-mesa-dri), \
+             or point OPENR_PYTHON at a Python that has it; `cargo openr doctor` checks",
+            plan.python.display(),
+            gl_backend()
+        );
+    }
+    let dir = tempfile::Builder::new().prefix("cargo-openr-sim").tempdir().context("cannot create a socket directory")?;
+    let exe = std::env::current_exe().context("cannot locate the cargo-openr executable")?;
+    let labelled = plan.robots.len() > 1;
+    let console = Arc::new(Mutex::new(()));
+    let mut sockets = Vec::new();
+    let mut runtimes = Vec::new();
+    let mut copiers = Vec::new();
+    for (k, args) in plan.robots.iter().enumerate() {
+        let sock = dir.path().join(format!("robot{k}.sock"));
+        let mut cmd = Command::new(&exe);
+        cmd.arg("run").args(args).arg("--robot-socket").arg(&sock).arg("--robot-wait");
+        let mut child = spawn(&mut cmd, labelled).with_context(|| format!("cannot start the runtime of robot {k}"))?;
+        if labelled {
+            let tag = format!("[robot {k}] ");
+            copiers.push(copy_lines(child.stdout.take().unwrap(), tag.clone(), false, console.clone()));
+            copiers.push(copy_lines(child.stderr.take().unwrap(), tag, true, console.clone()));
+        }
+        runtimes.push(child);
+        sockets.push(sock);
+    }
+    let mut cmd = Command::new(&plan.python);
+    cmd.arg(&plan.peer).args(&plan.peer_args).args(&sockets).env("MUJOCO_GL", gl_backend());
+    let peer = spawn(&mut cmd, false).with_context(|| format!("cannot start {}", plan.python.display()));
+    let mut peer = match peer {
+        Ok(p) => p,
+        Err(e) => {
+            stop_all(&mut runtimes);
+            return Err(e);
+        }
+    };
+    let (peer_status, statuses) = wait_all(&mut peer, &mut runtimes);
+    for c in copiers {
+        let _ = c.join();
+    }
+    for (k, s) in statuses.iter().enumerate() {
+        if !s.success() {
+            bail!("robot {k}: the runtime failed ({s})");
+        }
+    }
+    if !peer_status.success() {
+        bail!("the MuJoCo simulator failed ({peer_status}); its messages are above");
+    }
+    Ok(())
+}
+
+/// Children end with us (PR_SET_PDEATHSIG), and leave Ctrl-C to the runtimes: they stop
+/// on it, the peer then sees their connections close and ends by itself.
+fn spawn(cmd: &mut Command, piped: bool) -> std::io::Result<Child> {
+    if piped {
+        cmd.stdout(Stdio::piped()).stderr(Stdio::piped());
+    }
+    // SAFETY: prctl is async-signal-safe; nothing else runs between fork and exec.
+    unsafe {
+        cmd.pre_exec(|| {
+            libc::prctl(libc::PR_SET_PDEATHSIG, libc::SIGTERM);
+            Ok(())
+        });
+    }
+    cmd.spawn()
+}
+
+/// Waits for the peer and every runtime. A peer that fails first would leave the
+/// runtimes waiting for their clock forever: they are stopped then.
+fn wait_all(peer: &mut Child, runtimes: &mut [Child]) -> (ExitStatus, Vec<ExitStatus>) {
+    // SAFETY: ignoring SIGINT in this process only; children set their own handlers.
+    unsafe { libc::signal(libc::SIGINT, libc::SIG_IGN) };
+    let mut done: Vec<Option<ExitStatus>> = vec![None; runtimes.len()];
+    let mut peer_done = None;
+    loop {
+        for (k, c) in runtimes.iter_mut().enumerate() {
+            if done[k].is_none() {
+                done[k] = c.try_wait().ok().flatten();
+            }
+        }
+        if peer_done.is_none() {
+            peer_done = peer.try_wait().ok().flatten();
+            if peer_done.is_some_and(|s| !s.success()) {
+                stop_all(runtimes);
+            }
+        }
+        if peer_done.is_some() && done.iter().all(Option::is_some) {
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    (peer_done.unwrap(), done.into_iter().map(Option::unwrap).collect())
+}
+
+fn stop_all(runtimes: &mut [Child]) {
+    for c in runtimes {
+        if c.try_wait().ok().flatten().is_none() {
+            // SAFETY: plain kill(2) of our own child.
+            unsafe { libc::kill(c.id() as i32, libc::SIGTERM) };
+        }
+    }
+}
+
+/// Copies a robot's output line by line with its tag, so lines of robots never mix.
+fn copy_lines(from: impl Read + Send + 'static, tag: String, stderr: bool, console: Arc<Mutex<()>>) -> std::thread::JoinHandle<()> {
+    std::thread::spawn(move || {
+        for line in BufReader::new(from).split(b'\n').map_while(Result::ok) {
+            let _guard = console.lock().unwrap();
+            let mut text = tag.clone().into_bytes();
+            text.extend_from_slice(&line);
+            text.push(b'\n');
+            let _ = if stderr { std::io::stderr().write_all(&text) } else { std::io::stdout().write_all(&text) };
+        }
+    })
+}

@@ -1,0 +1,117 @@
+"""One runtime's robot: protocol primitive IDs <-> a Robot of the World.
+
+Gain mapping (ers7-model 4.5, robot-api 11). The program's PGAIN/DGAIN with the fixed
+shifts give servo coefficients P = PGAIN/4, D = DGAIN/2 (Tekkotsu arithmetic): PWM
+counts per count of calibrated angle error (1023 counts over the joint's software
+range) and per count of error change per 8 ms frame. With full PWM (1023) = the
+servo's torque limit tau_max (ers7.xml E11):
+    kp = gain_scale * (PGAIN/4) * tau_max / range            [N m / rad]
+    kv = gain_scale * (DGAIN/2) * 0.008 s * tau_max / range  [N m s / rad]
+gain_scale (--gain-scale) defaults to 4, an ESTIMATE: with 1 (the bare arithmetic)
+the weak leg gains Sony's samples stand on leave movelegs' base posture 20 deg off
+after its 1 s move (weak leg J1 P=0x10: kp = 4 * 2.0 / 4.276 = 1.87 N m/rad); with 4
+the legs reach it within ~1-2 deg and follow its +-20 deg swing, as the samples
+expect of a real ERS-7 (weak J1: kp = 7.5 N m/rad). The actuator's forcerange clips
+the output at tau_max like a saturated PWM. IGAIN is not modelled (a MuJoCo position
+actuator is PD); the joint's own damping and armature (ers7.xml E12) stay. A joint is
+driven only when motor power is on, its gain enabled and P > 0 (protocol FRAME);
+otherwise kp = kv = 0 (limp, back-drivable).
+
+Sensor noise (seeded, so a run is reproducible for a given --seed): ESTIMATES, the
+spec gives none -- accelerometer sigma 0.05 m/s^2 per axis (a MEMS part of the era at
+125 Hz), distance sensors sigma 1 mm. Joint angles are reported exactly.
+"""
+import math
+
+import numpy as np
+
+ACCEL_MAX = 19613300  # µm/s², ±2 g (ers7-model 5.4)
+GAIN_SCALE = 4.0  # estimated, see above
+PAW_THRESHOLD_N = 0.5  # estimated: a paw "switch" closes with 0.5 N of contact force
+ACCEL_SIGMA = 0.05  # m/s², estimated
+PSD_SIGMA = 0.001  # m, estimated
+EAR_UP = math.radians(15)  # ers7.xml E10
+EAR_KP, EAR_KV = 0.5, 0.005  # estimated: a quick snap within a frame or two
+# distance sensors (ers7-model 5.3): locator -> (sensor name in ers7.xml, min µm, max µm)
+PSDS = {
+    "PRM:/p1-Sensor:p1": ("psd_chest", 100000, 900000),
+    "PRM:/r1/c1/c2/c3/p1-Sensor:p1": ("psd_near", 50000, 500000),
+    "PRM:/r1/c1/c2/c3/p2-Sensor:p2": ("psd_far", 200000, 1500000),
+}
+PAWS = {"24": "lf_paw", "34": "lr_paw", "44": "rf_paw", "54": "rr_paw"}
+# accelerometer locator -> (MuJoCo axis, sign): a1 forward, a2 right (MuJoCo y is left), a3 up
+ACCEL = {"PRM:/a1-Sensor:a1": (0, 1.0), "PRM:/a2-Sensor:a2": (1, -1.0), "PRM:/a3-Sensor:a3": (2, 1.0)}
+# the "stand" posture of ers7-model 4.7 (deg) and the standard P gains, for robots
+# without a program (bench) -- keys are OPEN-R joint numbers
+STAND = {"11": -20, "12": 0, "13": 25, "14": -5, "61": 5, "62": 0,
+         **{f"{leg}{j}": v for leg in "2345" for j, v in zip("123", (-5, 3, 30))}}
+STANDARD_P = {"11": 0x0A, "12": 0x08, "13": 0x08, "14": 0x08, "61": 0x0A, "62": 0x0A,
+              **{f"{leg}{j}": p for leg in "2345" for j, p in zip("123", (0x1C, 0x14, 0x1C))}}
+
+
+def stand(robot, gain_scale=GAIN_SCALE):
+    """Put a robot without a program in the stand posture, servos holding it."""
+    robot.pose({n: math.radians(v) for n, v in STAND.items()})
+    for n in STAND:
+        robot.servo(n, gain_scale * STANDARD_P[n], gain_scale * 1)
+
+
+class Bridge:
+    def __init__(self, robot, welcome, gain_scale=GAIN_SCALE, seed=0, index=0):
+        self.robot, self.gain_scale = robot, gain_scale
+        self.rng = np.random.default_rng([seed, index])
+        self.joints, self.ranges, self.ears = {}, {}, {}
+        self.accel, self.paws, self.psds = [], [], []
+        granted = set(welcome["roles"])
+        for p in welcome["primitives"]:
+            loc, pid = p["locator"], p["id"]
+            num = loc.rsplit(":", 1)[-1]
+            if p["class"] == "joint" and num in robot.act and "joints" in granted:
+                self.joints[pid] = num
+                self.ranges[pid] = max((p["max_urad"] - p["min_urad"]) * 1e-6, 1e-3)
+            elif p["class"] == "ear" and num in robot.act:
+                self.ears[pid] = num
+            elif loc in ACCEL and "accel" in granted:
+                self.accel.append((pid,) + ACCEL[loc])
+            elif p["class"] == "switch" and num in PAWS and "switches" in granted:
+                self.paws.append((pid, PAWS[num]))
+            elif loc in PSDS and "psd" in granted:
+                self.psds.append((pid,) + PSDS[loc])
+        self.started = False
+
+    def start(self, frame):
+        """First frame: the robot takes the runtime's current joint angles (boot pose)."""
+        self.robot.pose({self.joints[j["id"]]: j["measured"] * 1e-6 for j in frame["joints"] if j["id"] in self.joints})
+        self.started = True
+
+    def apply(self, frame):
+        r, power = self.robot, bool(frame["motor_power"])
+        for j in frame["joints"]:
+            num = self.joints.get(j["id"])
+            if num is None:
+                continue
+            p, _, d = j["gain"]
+            if power and j["enabled"] and p > 0:
+                r.servo(num, self.gain_scale * p, self.gain_scale * d, self.ranges[j["id"]])
+            else:
+                r.set_gain(num, 0.0, 0.0)
+            r.target(num, j["target"] * 1e-6)
+        for e in frame["ears"]:
+            num = self.ears.get(e["id"])
+            if num is not None:
+                r.set_gain(num, EAR_KP if power else 0.0, EAR_KV if power else 0.0)
+                r.target(num, EAR_UP if e["state"] else 0.0)
+
+    def readings(self):
+        r = self.robot
+        joints = [(pid, round(r.angle(num) * 1e6)) for pid, num in self.joints.items()]
+        acc = r.accel() + self.rng.normal(0.0, ACCEL_SIGMA, 3)
+        sensors = [(pid, int(max(-ACCEL_MAX, min(ACCEL_MAX, round(sign * acc[axis] * 1e6)))))
+                   for pid, axis, sign in self.accel]
+        sensors += [(pid, int(r.value(name) > PAW_THRESHOLD_N)) for pid, name in self.paws]
+        for pid, name, lo, hi in self.psds:
+            dist = r.value(name)
+            noise = self.rng.normal(0.0, PSD_SIGMA)
+            um = hi if dist < 0 else min(hi, max(lo, round((dist + noise) * 1e6)))  # -1: nothing hit
+            sensors.append((pid, int(um)))
+        return joints, sensors

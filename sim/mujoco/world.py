@@ -1,0 +1,303 @@
+"""The simulated world: a scene (field, ball, start places) with N ERS-7s in it.
+
+`World(scene, robots)` builds one MuJoCo model from a scene file (default
+sim/mujoco/scene.xml) and `robots` copies of sim/mujoco/ers7.xml prefixed r0_, r1_, ...
+Robot k starts at the scene's site `start<k>` (position and heading) if there is one,
+else in a row behind robot 0 (which stands at the origin facing +x).
+
+Collisions: every robot touches the world (floor, ball, goals) and every other robot,
+never itself (MuJoCo would otherwise collide neighbouring leg parts). Robot k's geoms
+get contype bit k+1 and conaffinity "world and every other robot"; world geoms
+collide with everything. This allows 30 robots (32-bit masks, bit 0 = world).
+"""
+import math
+import os
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import mujoco
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DEFAULT_SCENE = os.path.join(HERE, "scene.xml")
+FRAME_S = 0.008  # one OPEN-R sensor frame
+MAX_ROBOTS = 30
+CAMERA_W, CAMERA_H = 416, 320  # ers7-model 9.1: the sensor's resolution
+# Rendering detail for software GL (Mesa llvmpipe), whose vertex stage is single-threaded
+# and the bound with several robots in view: 10 slices per sphere/capsule instead of
+# MuJoCo's 28 and undivided box faces (numquads 1, the lights are directional) give
+# 1.6x the images per second of 8 robots (419 -> 661/s); the ball keeps a round outline.
+RENDER_SLICES, RENDER_STACKS, RENDER_QUADS = 10, 5, 1
+
+
+class SceneError(Exception):
+    pass
+
+
+def start_places(scene_path, robots):
+    """(x, y, yaw) of each robot: the scene's `start<k>` sites, else a default row."""
+    try:
+        m = mujoco.MjModel.from_xml_path(scene_path)
+    except Exception as e:  # MuJoCo's message names the file, line and problem
+        raise SceneError(f"{scene_path}: not a MuJoCo scene: {e}") from None
+    if m.nu or any(m.joint(j).name.endswith("root") for j in range(m.njnt)):
+        raise SceneError(f"{scene_path}: a scene holds the field only; the peer adds the robots")
+    places = []
+    for k in range(robots):
+        try:
+            s = m.site(f"start{k}")
+        except KeyError:
+            places.append((-0.6 * k, 0.4 * k, 0.0))
+            continue
+        places.append((float(m.site_pos[s.id][0]), float(m.site_pos[s.id][1]), yaw_of(m.site_quat[s.id])))
+    return places
+
+
+def build_model(scene_path=DEFAULT_SCENE, robots=1):
+    if not 1 <= robots <= MAX_ROBOTS:
+        raise SceneError(f"{robots} robots: the world holds 1 to {MAX_ROBOTS}")
+    places = start_places(scene_path, robots)
+    scene = mujoco.MjSpec.from_file(scene_path)
+    for k, (x, y, yaw) in enumerate(places):
+        robot = mujoco.MjSpec.from_file(os.path.join(HERE, "ers7.xml"))
+        frame = scene.worldbody.add_frame(pos=[x, y, 0], quat=[math.cos(yaw / 2), 0, 0, math.sin(yaw / 2)])
+        scene.attach(robot, prefix=f"r{k}_", frame=frame)
+    m = scene.compile()
+    q = m.vis.quality
+    q.numslices, q.numstacks, q.numquads = RENDER_SLICES, RENDER_STACKS, RENDER_QUADS
+    _collision_masks(m, robots)
+    return m, places
+
+
+def _collision_masks(m, robots):
+    every_robot = sum(1 << (k + 1) for k in range(robots))
+    roots = {m.body(f"r{k}_trunk").id: k for k in range(robots)}
+    for g in range(m.ngeom):
+        k = roots.get(m.body_rootid[m.geom_bodyid[g]])
+        if k is None:
+            if m.geom_contype[g] or m.geom_conaffinity[g]:  # lines and markers stay ghosts
+                m.geom_contype[g], m.geom_conaffinity[g] = 1, 1 | every_robot
+        else:
+            bit = 1 << (k + 1)
+            m.geom_contype[g], m.geom_conaffinity[g] = bit, 1 | (every_robot & ~bit)
+
+
+class Robot:
+    """One ERS-7 in the model: joint numbers -> indices, servo gains, sensors, pose."""
+
+    def __init__(self, model, data, prefix):
+        self.m, self.d, self.prefix = model, data, prefix
+        self.act = {}  # joint number "21" -> (actuator id, qpos adr, dof adr)
+        for a in range(model.nu):
+            name = model.actuator(a).name
+            if name.startswith(prefix + "j"):
+                j = model.actuator_trnid[a, 0]
+                self.act[name[len(prefix) + 1:]] = (a, model.jnt_qposadr[j], model.jnt_dofadr[j])
+        self.root = model.body(prefix + "trunk").id
+        root_joint = model.joint(prefix + "root").id
+        self.root_q = model.jnt_qposadr[root_joint]
+        self.root_v = model.jnt_dofadr[root_joint]
+        self.geoms = [g for g in range(model.ngeom) if model.geom_bodyid[g] != 0
+                      and model.body_rootid[model.geom_bodyid[g]] == self.root]
+        self.sensor = {model.sensor(s).name[len(prefix):]: model.sensor_adr[s]
+                       for s in range(model.nsensor) if model.sensor(s).name.startswith(prefix)}
+        self.camera = model.camera(prefix + "eye").id
+
+    def set_gain(self, num, kp, kv):
+        a = self.act[num][0]
+        self.m.actuator_gainprm[a, 0] = kp
+        self.m.actuator_biasprm[a, 1] = -kp
+        self.m.actuator_biasprm[a, 2] = -kv
+
+    def servo(self, num, p, d, range_rad=None):
+        """kp/kv from (already scaled) P and D gains; range: the software range (rad)."""
+        a = self.act[num][0]
+        if range_rad is None:
+            range_rad = self.m.actuator_ctrlrange[a, 1] - self.m.actuator_ctrlrange[a, 0]
+        tau = self.m.actuator_forcerange[a, 1]
+        self.set_gain(num, p / 4 * tau / range_rad, d / 2 * FRAME_S * tau / range_rad)
+
+    def target(self, num, rad):
+        self.d.ctrl[self.act[num][0]] = rad
+
+    def angle(self, num):
+        return self.d.qpos[self.act[num][1]]
+
+    def pose(self, angles):
+        """Joints to `angles` (num -> rad), the body level and still, the lowest point just
+        on the floor (where the robot starts: x, y and heading are kept)."""
+        m, d = self.m, self.d
+        for num, v in angles.items():
+            if num in self.act:
+                d.qpos[self.act[num][1]] = v
+                d.ctrl[self.act[num][0]] = v
+        yaw = yaw_of(d.qpos[self.root_q + 3:self.root_q + 7])
+        d.qpos[self.root_q + 3:self.root_q + 7] = (math.cos(yaw / 2), 0, 0, math.sin(yaw / 2))
+        d.qvel[self.root_v:self.root_v + 6] = 0
+        mujoco.mj_forward(m, d)
+        d.qpos[self.root_q + 2] += 0.001 - self.lowest()
+        mujoco.mj_forward(m, d)
+
+    def lowest(self):
+        m, d, low = self.m, self.d, 1e9
+        for g in self.geoms:
+            z, R, s = d.geom_xpos[g][2], d.geom_xmat[g].reshape(3, 3), m.geom_size[g]
+            t = m.geom_type[g]
+            if t == mujoco.mjtGeom.mjGEOM_SPHERE:
+                b = z - s[0]
+            elif t == mujoco.mjtGeom.mjGEOM_CAPSULE:
+                b = z - abs(R[2, 2]) * s[1] - s[0]
+            elif t == mujoco.mjtGeom.mjGEOM_BOX:
+                b = z - (abs(R[2, 0]) * s[0] + abs(R[2, 1]) * s[1] + abs(R[2, 2]) * s[2])
+            else:
+                b = z - m.geom_rbound[g]
+            low = min(low, b)
+        return low
+
+    def value(self, name):
+        return self.d.sensordata[self.sensor[name]]
+
+    def accel(self):
+        adr = self.sensor["accel"]
+        return self.d.sensordata[adr:adr + 3]
+
+    def place(self):
+        """Trunk position (m) and orientation quaternion (w, x, y, z)."""
+        q = self.d.qpos[self.root_q:self.root_q + 7]
+        return q[:3], q[3:]
+
+    def push(self, force):
+        """Apply `force` (N, world frame) at the trunk's centre (zero to stop)."""
+        self.d.xfrc_applied[self.root, :3] = force
+
+
+class World:
+    """Model + data + robots, stepped one 8 ms frame at a time, with a camera renderer."""
+
+    def __init__(self, scene=DEFAULT_SCENE, robots=1, camera=True, camera_threads=None, half=False):
+        self.m, self.places = build_model(scene, robots)
+        self.d = mujoco.MjData(self.m)
+        mujoco.mj_forward(self.m, self.d)
+        self.robots = [Robot(self.m, self.d, f"r{k}_") for k in range(robots)]
+        self.substeps = max(1, round(FRAME_S / self.m.opt.timestep))
+        self.cameras = Cameras(self.m, self.robots, camera_threads, half) if camera else None
+        self.ball_q = None
+        try:
+            self.ball_q = self.m.jnt_qposadr[self.m.joint("ball").id]
+        except KeyError:
+            pass
+        self.physics_s = self.render_s = 0.0
+        self.frames = self.images = 0
+
+    def close(self):
+        if self.cameras is not None:
+            self.cameras.close()
+            self.cameras = None
+
+    def place_ball(self, x, y):
+        if self.ball_q is None:
+            raise SceneError("the scene has no ball (a free joint named `ball`)")
+        self.d.qpos[self.ball_q:self.ball_q + 2] = (x, y)
+        mujoco.mj_forward(self.m, self.d)
+
+    def ball(self):
+        return None if self.ball_q is None else self.d.qpos[self.ball_q:self.ball_q + 3]
+
+    def step(self):
+        t = time.perf_counter()
+        for _ in range(self.substeps):
+            mujoco.mj_step(self.m, self.d)
+        self.physics_s += time.perf_counter() - t
+        self.frames += 1
+
+    def render(self, robots, deliver):
+        """Render the head cameras of `robots` (indices) from the current state on the
+        camera threads; deliver(robot, rgb) runs on the thread that rendered it (rgb:
+        CAMERA_H x CAMERA_W x 3, rows from the top). Returns when all are delivered."""
+        t = time.perf_counter()
+        self.cameras.render(self.d, robots, deliver)
+        self.render_s += time.perf_counter() - t
+        self.images += len(robots)
+
+    def report(self, wall_s=None):
+        sim_s = self.frames * FRAME_S
+        if not self.frames:
+            return "mujoco peer: no frame simulated"
+        rtf = sim_s / self.physics_s if self.physics_s else float("inf")
+        line = (f"mujoco peer: {self.frames} frames = {sim_s:.2f} s simulated, {len(self.robots)} robot(s); "
+                f"physics {self.physics_s:.2f} s wall -> real-time factor {rtf:.1f}")
+        if self.images:
+            line += (f"; camera {self.images} images ({self.cameras.describe()}) in {self.render_s:.2f} s -> "
+                     f"{self.images / self.render_s:.0f} fps, "
+                     f"physics+camera real-time factor {sim_s / (self.physics_s + self.render_s):.1f}")
+        if wall_s:
+            line += f"; whole run {wall_s:.2f} s wall -> {sim_s / wall_s:.2f} x real time"
+        return line
+
+
+def yaw_of(quat):
+    w, x, y, z = quat
+    return math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+
+
+def tilt_of(quat):
+    """Angle (rad) between the trunk's up axis and the world's up axis."""
+    w, x, y, z = quat
+    return math.acos(max(-1.0, min(1.0, 1 - 2 * (x * x + y * y))))
+
+
+class Cameras:
+    """Offscreen head-camera rendering on a pool of threads, each with its own GL context
+    (MuJoCo releases the GIL while Mesa renders, so software GL uses every core).
+    half=True renders 208 x 160 and doubles each pixel: layer H and below are then
+    what the full image gives, without its 416 x 320 detail (the Y_LH/HL/HH bands are 0)."""
+
+    def __init__(self, model, robots, threads=None, half=False):
+        self.m, self.robots, self.half = model, robots, half
+        self.threads = threads or min(len(robots), os.cpu_count() or 1)
+        self.local = threading.local()
+        self.scene_lock = threading.Lock()  # mjv_updateScene may use MjData's scratch stack
+        self.vis = mujoco.MjvOption()  # what a camera sees: no rangefinder rays, no sites
+        self.vis.flags[mujoco.mjtVisFlag.mjVIS_RANGEFINDER] = 0
+        self.vis.sitegroup[:] = 0
+        self.pool = ThreadPoolExecutor(self.threads, thread_name_prefix="camera")
+
+    def describe(self):
+        size = f"{CAMERA_W // 2}x{CAMERA_H // 2} doubled" if self.half else f"{CAMERA_W}x{CAMERA_H}"
+        return f"{size}, {self.threads} render thread(s)"
+
+    def _renderer(self):
+        r = getattr(self.local, "renderer", None)
+        if r is None:
+            h, w = (CAMERA_H // 2, CAMERA_W // 2) if self.half else (CAMERA_H, CAMERA_W)
+            r = self.local.renderer = mujoco.Renderer(self.m, height=h, width=w)
+        return r
+
+    def _one(self, d, k, deliver):
+        r = self._renderer()
+        with self.scene_lock:
+            r.update_scene(d, camera=self.robots[k].camera, scene_option=self.vis)
+        rgb = r.render()
+        if self.half:
+            rgb = np.repeat(np.repeat(rgb, 2, axis=0), 2, axis=1)
+        deliver(k, rgb)
+
+    def render(self, d, robots, deliver):
+        for f in [self.pool.submit(self._one, d, k, deliver) for k in robots]:
+            f.result()  # re-raises a rendering or delivery error here
+
+    def close(self):
+        """Free each GL context on the thread that made it (EGL refuses otherwise)."""
+        barrier = threading.Barrier(self.threads)
+
+        def free():
+            r = getattr(self.local, "renderer", None)
+            if r is not None:
+                r.close()
+                self.local.renderer = None
+            barrier.wait(timeout=10)  # keeps this thread busy so each thread gets one call
+
+        for f in [self.pool.submit(free) for _ in range(self.threads)]:
+            f.result()
+        self.pool.shutdown()
