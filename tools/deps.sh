@@ -1,12 +1,25 @@
 #!/usr/bin/env bash
 # Installs the host packages cargo-openr needs on Debian/Ubuntu (idempotent, quiet when
-# everything is already there). Used by the README commands and by CI.
+# everything is already there). Used by the README commands and by CI:
+#   * the build: g++ gcc make binutils gzip, python3 (tests and the robot protocol peers);
+#   * the MuJoCo simulator (`cargo openr run --sim mujoco`): Mesa's headless GL (EGL and
+#     OSMesa) and mujoco==$MUJOCO_VERSION from PyPI in a venv at $MUJOCO_VENV
+#     (default ~/.cache/cargo-openr/mujoco-venv, where cargo-openr looks for it).
 set -euo pipefail
+MUJOCO_VERSION=4.0.0  # keep in step with cargo-openr/src/ops/sim.rs MUJOCO_VERSION
+VENV=${MUJOCO_VENV:-${XDG_CACHE_HOME:-$HOME/.cache}/cargo-openr/mujoco-venv}
+
 need=()
 for pkg_cmd in g++:g++ gcc:gcc make:make binutils:ar gzip:gzip python3:python3; do
   pkg=${pkg_cmd%%:*}; cmd=${pkg_cmd##*:}
   command -v "$cmd" >/dev/null 2>&1 || need+=("$pkg")
 done
+for pkg in libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6; do
+  dpkg -s "$pkg" >/dev/null 2>&1 || need+=("$pkg")
+done
+if command -v python3 >/dev/null 2>&1 && ! python3 -c "import ensurepip, venv" >/dev/null 2>&1; then
+  need+=(python3-venv)
+fi
 if ((${#need[@]})); then
   sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
   echo "installing: ${need[*]}" >&2
@@ -14,3 +27,9 @@ if ((${#need[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${need[@]}" >/dev/null
 fi
 command -v cargo >/dev/null 2>&1 || { echo "cargo not found: install Rust from your distribution or rustup" >&2; exit 1; }
+
+if ! "$VENV/bin/python" -c "import mujoco, sys; sys.exit(mujoco.__version__ != '$MUJOCO_VERSION')" >/dev/null 2>&1; then
+  echo "installing: mujoco==$MUJOCO_VERSION (pip, into $VENV)" >&2
+  python3 -m venv "$VENV"
+  "$VENV/bin/pip" install -q --disable-pip-version-check "mujoco==$MUJOCO_VERSION"
+fi

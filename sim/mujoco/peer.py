@@ -141,16 +141,24 @@ class Pushes:
 
 
 def state_line(world, frame, t_ms):
-    """Ground truth for --state: every robot's trunk position/orientation, the ball."""
+    """Ground truth for --state: every robot's trunk position and orientation, its head
+    camera's position and orientation (MuJoCo camera frame: looks along -z, x right,
+    y up; xmat row-major), the ball."""
     robots = []
     for r in world.robots:
         pos, quat = r.place()
-        robots.append({"pos": [round(float(v), 5) for v in pos], "quat": [round(float(v), 5) for v in quat]})
+        cam = r.camera
+        robots.append({"pos": _r(pos), "quat": _r(quat),
+                       "camera": {"pos": _r(world.d.cam_xpos[cam]), "xmat": _r(world.d.cam_xmat[cam])}})
     line = {"frame": frame, "time_ms": t_ms, "robots": robots}
     ball = world.ball()
     if ball is not None:
-        line["ball"] = [round(float(v), 5) for v in ball]
+        line["ball"] = _r(ball)
     return json.dumps(line)
+
+
+def _r(values):
+    return [round(float(v), 5) for v in values]
 
 
 def parse_xy(s):
@@ -210,7 +218,7 @@ def run(a):
 
             if due:
                 world.render(due, deliver)
-            if state and live[0][1]["sensor_due"]:
+            if state:
                 state.write(state_line(world, live[0][1]["frame"], t_ms) + "\n")
             if a.frames and world.frames >= a.frames:
                 for link, f in live:
@@ -261,7 +269,7 @@ def main():
     ap.add_argument("--seed", type=int, default=0, help="seed of the sensor noise (default 0)")
     ap.add_argument("--ball", type=parse_xy, metavar="X,Y", help="put the ball here (m; robot 0 starts at 0,0 facing +x)")
     ap.add_argument("--push", action="append", default=[], metavar="T:FX,FY,FZ[@ROBOT]", help="shove a robot's trunk for 100 ms at virtual time T s with this force (N)")
-    ap.add_argument("--state", metavar="FILE", help="write the ground truth (trunk poses, ball) every 32 ms as JSON lines")
+    ap.add_argument("--state", metavar="FILE", help="write the ground truth (trunk and camera poses, ball) of every frame as JSON lines")
     ap.add_argument("--frames", type=int, default=0, help="detach (BYE) after this many frames")
     ap.add_argument("--bench", type=float, metavar="SECONDS", help="no runtime: simulate SECONDS standing, print the real-time factor")
     ap.add_argument("--quiet", action="store_true")

@@ -81,6 +81,13 @@ def _collision_masks(m, robots):
         else:
             bit = 1 << (k + 1)
             m.geom_contype[g], m.geom_conaffinity[g] = bit, 1 | (every_robot & ~bit)
+    # The broadphase first filters body pairs by the OR of their geoms' masks.
+    m.body_contype[:] = 0
+    m.body_conaffinity[:] = 0
+    for g in range(m.ngeom):
+        b = m.geom_bodyid[g]
+        m.body_contype[b] |= m.geom_contype[g]
+        m.body_conaffinity[b] |= m.geom_conaffinity[g]
 
 
 class Robot:

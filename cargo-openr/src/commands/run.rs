@@ -17,7 +17,7 @@ pub struct Args {
     /// The Memory Stick directory (the one containing OPEN-R/); with --sim mujoco, one per robot
     #[arg(value_name = "MS_DIR", required = true, num_args = 1..)]
     ms_dirs: Vec<PathBuf>,
-    /// Simulator: the built-in kinematic ERS-7, or `mujoco` (physics, cameras rendered from a 3-D scene; needs `tools/deps.sh --mujoco`)
+    /// Simulator: the built-in kinematic ERS-7, or `mujoco` (physics, cameras rendered from a 3-D scene; needs what `tools/deps.sh` installs)
     #[arg(long, value_enum, default_value_t = Sim::Builtin)]
     sim: Sim,
     /// MuJoCo scene: field, objects and `start<k>` sites for the robots (default: the SDK root's sim/mujoco/scene.xml)

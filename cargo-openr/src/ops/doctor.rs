@@ -5,6 +5,8 @@ use std::process::Command;
 
 use serde::Serialize;
 
+use crate::ops::sim;
+
 /// One checked item.
 #[derive(Debug, Clone, Serialize)]
 pub struct Finding {
@@ -44,7 +46,6 @@ pub fn diagnose(sdk: &Path, exe: &Path) -> Vec<Finding> {
         });
     }
     out.push(mujoco());
-    out.push(gl_backend());
     out.push(sdk_root(sdk, exe));
     out
 }
@@ -63,56 +64,26 @@ fn with_version(path: &Path) -> String {
     }
 }
 
+/// MuJoCo for `run --sim mujoco`: the simulator's Python imports it and renders offscreen
+/// with the GL backend (`MUJOCO_GL`, default egl) -- the same probe `run` makes.
 fn mujoco() -> Finding {
-    let out = Command::new("python3").args(["-c", "import mujoco; print(mujoco.__version__)"]).output();
-    match out {
-        Ok(o) if o.status.success() => Finding {
-            name: "python3 mujoco".into(),
+    let python = sim::python();
+    let name = "MuJoCo + GL".to_string();
+    match sim::probe(&python) {
+        Ok(version) => Finding {
+            name,
             required: false,
-            ok: true,
-            detail: format!("mujoco {}", String::from_utf8_lossy(&o.stdout).trim()),
-            fix: None,
+            ok: version.ends_with(sim::MUJOCO_VERSION),
+            detail: format!("{version} rendering with MUJOCO_GL={} via {}", sim::gl_backend(), python.display()),
+            fix: (!version.ends_with(sim::MUJOCO_VERSION)).then(|| format!("tools/deps.sh (installs mujoco=={} into the venv)", sim::MUJOCO_VERSION)),
         },
-        _ => Finding {
-            name: "python3 mujoco".into(),
+        Err(why) => Finding {
+            name,
             required: false,
             ok: false,
-            detail: "`python3 -c \"import mujoco\"` failed".into(),
-            fix: Some("pip install mujoco".into()),
+            detail: format!("{} (MUJOCO_GL={}): {why}", python.display(), sim::gl_backend()),
+            fix: Some("tools/deps.sh (apt libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6; pip mujoco in ~/.cache/cargo-openr/mujoco-venv)".into()),
         },
-    }
-}
-
-/// MuJoCo renders off-screen through EGL or OSMesa (`MUJOCO_GL=egl|osmesa`).
-fn gl_backend() -> Finding {
-    let dirs = ["/usr/lib/x86_64-linux-gnu", "/usr/lib64", "/usr/lib", "/usr/local/lib", "/lib/x86_64-linux-gnu"];
-    let has = |prefix: &str| {
-        dirs.iter().any(|d| {
-            std::fs::read_dir(d).is_ok_and(|rd| rd.flatten().any(|e| e.file_name().to_string_lossy().starts_with(prefix)))
-        })
-    };
-    let mut found = Vec::new();
-    if has("libEGL.so") {
-        found.push("egl");
-    }
-    if has("libOSMesa.so") {
-        found.push("osmesa");
-    }
-    let chosen = std::env::var("MUJOCO_GL").ok().filter(|v| !v.is_empty());
-    let ok = match &chosen {
-        Some(c) => found.contains(&c.as_str()) || c == "glfw",
-        None => !found.is_empty(),
-    };
-    let mut detail = if found.is_empty() { "no libEGL.so or libOSMesa.so found".to_string() } else { format!("available: {}", found.join(", ")) };
-    if let Some(c) = chosen {
-        detail.push_str(&format!("; MUJOCO_GL={c}"));
-    }
-    Finding {
-        name: "GL backend (MUJOCO_GL)".into(),
-        required: false,
-        ok,
-        detail,
-        fix: (!ok).then(|| "apt-get install libegl1 libosmesa6".into()),
     }
 }
 

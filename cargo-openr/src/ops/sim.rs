@@ -69,7 +69,7 @@ pub fn run(plan: &Plan) -> anyhow::Result<()> {
     if let Err(why) = probe(&plan.python) {
         bail!(
             "the MuJoCo simulator cannot start: {} (MUJOCO_GL={}): {why}\n\
-             help: install it with `tools/deps.sh --mujoco` (pip mujoco=={MUJOCO_VERSION} in a venv, apt libegl1 libgl1-mesa-dri), \
+             help: install it with `tools/deps.sh` (pip mujoco=={MUJOCO_VERSION} in a venv, apt libegl1 libgl1-mesa-dri), \
              or point OPENR_PYTHON at a Python that has it; `cargo openr doctor` checks",
             plan.python.display(),
             gl_backend()

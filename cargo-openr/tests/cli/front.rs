@@ -271,7 +271,7 @@ fn doctor_reports_the_host_and_the_sdk_root() {
     for tool in ["g++", "gcc", "make", "ar", "strip", "gzip"] {
         assert_eq!(get(tool)["required"], true);
     }
-    for opt in ["gdb", "valgrind", "python3", "python3 mujoco", "GL backend (MUJOCO_GL)"] {
+    for opt in ["gdb", "valgrind", "python3", "MuJoCo + GL"] {
         let f = get(opt);
         assert_eq!(f["required"], false);
         assert!(f["ok"].as_bool().unwrap() || f["fix"].as_str().is_some(), "{f}");

@@ -5,6 +5,7 @@ mod camera;
 mod clock;
 mod corpus;
 mod front;
+mod mujoco;
 mod net;
 mod peer;
 mod robot;
