@@ -171,7 +171,7 @@ def parse_xy(s):
 
 def make_world(a, links):
     robots = max(a.robots or 0, links)
-    world = World(a.scene, robots, camera=not a.no_camera, camera_threads=a.camera_threads, half=a.camera == "208x160")
+    world = World(a.scene, robots, camera=not a.no_camera, camera_threads=a.camera_threads)
     for r in world.robots[links:]:
         stand(r, a.gain_scale)
     if a.ball:
@@ -262,8 +262,6 @@ def main():
     ap.add_argument("--scene", default=DEFAULT_SCENE, help="MuJoCo scene file: field, objects, `start<k>` sites (default sim/mujoco/scene.xml)")
     ap.add_argument("--robots", type=int, help="robots in the world (default: one per runtime; the others stand)")
     ap.add_argument("--no-camera", action="store_true", help="do not render the head cameras (the runtime's scene is used)")
-    ap.add_argument("--camera", choices=["416x320", "208x160"], default="416x320",
-                    help="render size: the sensor's 416x320 (default), or 208x160 doubled (layers H/M/L/C only, faster)")
     ap.add_argument("--camera-threads", type=int, help="render threads (default: one per core, at most one per robot)")
     ap.add_argument("--gain-scale", type=float, default=GAIN_SCALE, help=f"multiply kp/kv of the gain mapping (default {GAIN_SCALE}, estimated)")
     ap.add_argument("--seed", type=int, default=0, help="seed of the sensor noise (default 0)")

@@ -17,7 +17,6 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 
 import mujoco
-import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_SCENE = os.path.join(HERE, "scene.xml")
@@ -182,13 +181,13 @@ class Robot:
 class World:
     """Model + data + robots, stepped one 8 ms frame at a time, with a camera renderer."""
 
-    def __init__(self, scene=DEFAULT_SCENE, robots=1, camera=True, camera_threads=None, half=False):
+    def __init__(self, scene=DEFAULT_SCENE, robots=1, camera=True, camera_threads=None):
         self.m, self.places = build_model(scene, robots)
         self.d = mujoco.MjData(self.m)
         mujoco.mj_forward(self.m, self.d)
         self.robots = [Robot(self.m, self.d, f"r{k}_") for k in range(robots)]
         self.substeps = max(1, round(FRAME_S / self.m.opt.timestep))
-        self.cameras = Cameras(self.m, self.robots, camera_threads, half) if camera else None
+        self.cameras = Cameras(self.m, self.robots, camera_threads) if camera else None
         self.ball_q = None
         try:
             self.ball_q = self.m.jnt_qposadr[self.m.joint("ball").id]
@@ -256,12 +255,10 @@ def tilt_of(quat):
 
 class Cameras:
     """Offscreen head-camera rendering on a pool of threads, each with its own GL context
-    (MuJoCo releases the GIL while Mesa renders, so software GL uses every core).
-    half=True renders 208 x 160 and doubles each pixel: layer H and below are then
-    what the full image gives, without its 416 x 320 detail (the Y_LH/HL/HH bands are 0)."""
+    (MuJoCo releases the GIL while Mesa renders, so software GL uses every core)."""
 
-    def __init__(self, model, robots, threads=None, half=False):
-        self.m, self.robots, self.half = model, robots, half
+    def __init__(self, model, robots, threads=None):
+        self.m, self.robots = model, robots
         self.threads = threads or min(len(robots), os.cpu_count() or 1)
         self.local = threading.local()
         self.scene_lock = threading.Lock()  # mjv_updateScene may use MjData's scratch stack
@@ -271,24 +268,19 @@ class Cameras:
         self.pool = ThreadPoolExecutor(self.threads, thread_name_prefix="camera")
 
     def describe(self):
-        size = f"{CAMERA_W // 2}x{CAMERA_H // 2} doubled" if self.half else f"{CAMERA_W}x{CAMERA_H}"
-        return f"{size}, {self.threads} render thread(s)"
+        return f"{CAMERA_W}x{CAMERA_H}, {self.threads} render thread(s)"
 
     def _renderer(self):
         r = getattr(self.local, "renderer", None)
         if r is None:
-            h, w = (CAMERA_H // 2, CAMERA_W // 2) if self.half else (CAMERA_H, CAMERA_W)
-            r = self.local.renderer = mujoco.Renderer(self.m, height=h, width=w)
+            r = self.local.renderer = mujoco.Renderer(self.m, height=CAMERA_H, width=CAMERA_W)
         return r
 
     def _one(self, d, k, deliver):
         r = self._renderer()
         with self.scene_lock:
             r.update_scene(d, camera=self.robots[k].camera, scene_option=self.vis)
-        rgb = r.render()
-        if self.half:
-            rgb = np.repeat(np.repeat(rgb, 2, axis=0), 2, axis=1)
-        deliver(k, rgb)
+        deliver(k, r.render())
 
     def render(self, d, robots, deliver):
         for f in [self.pool.submit(self._one, d, k, deliver) for k in robots]:
