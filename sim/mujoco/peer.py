@@ -36,8 +36,15 @@ sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
 os.environ.setdefault("MUJOCO_GL", "egl")
 
 import robot_peer as rp  # noqa: E402  (protocol codec: the reference client)
-from bridge import GAIN_SCALE, Bridge, stand  # noqa: E402
-from world import CAMERA_H, CAMERA_W, DEFAULT_SCENE, FRAME_S, SceneError, World  # noqa: E402
+
+# Exit status 3: MuJoCo or offscreen GL is not usable here (cargo openr says how to install).
+UNAVAILABLE = 3
+try:
+    from bridge import GAIN_SCALE, Bridge, stand  # noqa: E402  (these import numpy and mujoco)
+    from world import CAMERA_H, CAMERA_W, DEFAULT_SCENE, FRAME_S, RenderError, SceneError, World  # noqa: E402
+except (ImportError, RuntimeError) as e:  # RuntimeError: mujoco rejects MUJOCO_GL
+    print(f"mujoco peer: error: {sys.executable} cannot import MuJoCo: {e}", file=sys.stderr)
+    sys.exit(UNAVAILABLE)
 
 PUSH_S = 0.1  # a --push lasts 100 ms
 
@@ -135,9 +142,16 @@ class Pushes:
             self.items.append((float(when), f, k))
 
     def apply(self, world, t):
-        """Forces for the frame that starts at virtual time t (s)."""
+        """Forces for the frame that starts at virtual time t (s); pushes that overlap on
+        one robot add up."""
+        if not self.items:
+            return
+        force = [[0.0, 0.0, 0.0] for _ in world.robots]
         for when, f, k in self.items:
-            world.robots[k].push(f if when <= t < when + PUSH_S else (0.0, 0.0, 0.0))
+            if when <= t < when + PUSH_S:
+                force[k] = [a + b for a, b in zip(force[k], f)]
+        for r, f in zip(world.robots, force):
+            r.push(f)
 
 
 def state_line(world, frame, t_ms):
@@ -170,12 +184,16 @@ def parse_xy(s):
 
 
 def make_world(a, links):
-    robots = max(a.robots or 0, links)
+    robots = max(a.robots or 1, links)
     world = World(a.scene, robots, camera=not a.no_camera, camera_threads=a.camera_threads)
-    for r in world.robots[links:]:
-        stand(r, a.gain_scale)
-    if a.ball:
-        world.place_ball(*a.ball)
+    try:
+        for r in world.robots[links:]:
+            stand(r, a.gain_scale)
+        if a.ball:
+            world.place_ball(*a.ball)
+    except Exception:
+        world.close()
+        raise
     return world
 
 
@@ -184,46 +202,17 @@ def run(a):
     # ends after the last one (reporting) instead of dying with a traceback.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     targets = [(p, None) for p in a.socket] or [(None, a.tcp)]
-    world = make_world(a, len(targets))  # scene and option errors before attaching
-    pushes = Pushes(a.push, len(world.robots))
-    links = [Link(connect(p, t), k) for k, (p, t) in enumerate(targets)]
-    for link in links:
-        w = link.hello(not a.no_camera, a.quiet)
-        link.bridge = Bridge(world.robots[link.index], w, a.gain_scale, a.seed, link.index)
-    state = open(a.state, "w") if a.state else None
-    wall = time.perf_counter()
+    pushes = Pushes(a.push, max(a.robots or 1, len(targets)))  # option errors before the world
+    world = make_world(a, len(targets))  # scene errors before attaching
+    links, state, wall = [], None, time.perf_counter()
     try:
-        while True:
-            live = [(link, link.next_frame()) for link in links if link.open]
-            live = [(link, f) for link, f in live if f is not None]
-            if not live:
-                break
-            for link, f in live:
-                if not link.bridge.started:
-                    link.bridge.start(f)
-                link.bridge.apply(f)
-            t_ms = live[0][1]["time_ms"]
-            pushes.apply(world, t_ms / 1000.0)
-            world.step()
-            answers = {link.index: (link, f, link.bridge.readings()) for link, f in live}  # fixed order: seeded noise
-            due = [link.index for link, f in live if link.camera and f["camera_due"]]
-            for k, (link, f, readings) in answers.items():
-                if k not in due:
-                    link.peer.send(rp.READINGS, f["frame"], rp.readings_payload(*readings))
-
-            def deliver(k, rgb):  # on a camera thread; a link is answered by one thread only
-                link, f, readings = answers[k]
-                link.peer.send(rp.IMAGE, f["frame"], struct.pack("<HH", CAMERA_W, CAMERA_H) + rgb.tobytes())
-                link.peer.send(rp.READINGS, f["frame"], rp.readings_payload(*readings))
-
-            if due:
-                world.render(due, deliver)
-            if state:
-                state.write(state_line(world, live[0][1]["frame"], t_ms) + "\n")
-            if a.frames and world.frames >= a.frames:
-                for link, f in live:
-                    link.peer.send(rp.BYE, f["frame"], struct.pack("<H", 4) + b"done")
-                break
+        links = [Link(connect(p, t), k) for k, (p, t) in enumerate(targets)]
+        for link in links:
+            w = link.hello(not a.no_camera, a.quiet)
+            link.bridge = Bridge(world.robots[link.index], w, a.gain_scale, a.seed, link.index)
+        state = open(a.state, "w") if a.state else None
+        wall = time.perf_counter()
+        serve(a, world, links, pushes, state)
     except (BrokenPipeError, ConnectionResetError):
         pass  # a runtime ended between its FRAME and our answer
     finally:
@@ -236,6 +225,41 @@ def run(a):
         if not a.quiet:
             print(report, file=sys.stderr, flush=True)
     return 0
+
+
+def serve(a, world, links, pushes, state):
+    """The lockstep: one FRAME from every attached runtime, one physics step, answers."""
+    while True:
+        live = [(link, link.next_frame()) for link in links if link.open]
+        live = [(link, f) for link, f in live if f is not None]
+        if not live:
+            return
+        for link, f in live:
+            if not link.bridge.started:
+                link.bridge.start(f)
+            link.bridge.apply(f)
+        t_ms = live[0][1]["time_ms"]
+        pushes.apply(world, t_ms / 1000.0)
+        world.step()
+        answers = {link.index: (link, f, link.bridge.readings()) for link, f in live}  # fixed order: seeded noise
+        due = [link.index for link, f in live if link.camera and f["camera_due"]]
+        for k, (link, f, readings) in answers.items():
+            if k not in due:
+                link.peer.send(rp.READINGS, f["frame"], rp.readings_payload(*readings))
+
+        def deliver(k, rgb):  # on a camera thread; a link is answered by one thread only
+            link, f, readings = answers[k]
+            link.peer.send(rp.IMAGE, f["frame"], struct.pack("<HH", CAMERA_W, CAMERA_H) + rgb.tobytes())
+            link.peer.send(rp.READINGS, f["frame"], rp.readings_payload(*readings))
+
+        if due:
+            world.render(due, deliver)
+        if state:
+            state.write(state_line(world, live[0][1]["frame"], t_ms) + "\n")
+        if a.frames and world.frames >= a.frames:
+            for link, f in live:
+                link.peer.send(rp.BYE, f["frame"], struct.pack("<H", 4) + b"done")
+            return
 
 
 def bench(a):
@@ -278,6 +302,9 @@ def main():
         if not (a.socket or a.tcp):
             ap.error("give the runtimes' socket paths, --tcp HOST:PORT or --bench SECONDS")
         return run(a)
+    except RenderError as e:
+        print(f"mujoco peer: error: {e}", file=sys.stderr)
+        return UNAVAILABLE
     except (SceneError, ProtocolError) as e:
         print(f"mujoco peer: error: {e}", file=sys.stderr)
         return 2

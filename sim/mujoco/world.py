@@ -34,6 +34,10 @@ class SceneError(Exception):
     pass
 
 
+class RenderError(Exception):
+    """Offscreen rendering is not available (no EGL/OSMesa, or a bad MUJOCO_GL)."""
+
+
 def start_places(scene_path, robots):
     """(x, y, yaw) of each robot: the scene's `start<k>` sites, else a default row."""
     try:
@@ -247,12 +251,6 @@ def yaw_of(quat):
     return math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
 
 
-def tilt_of(quat):
-    """Angle (rad) between the trunk's up axis and the world's up axis."""
-    w, x, y, z = quat
-    return math.acos(max(-1.0, min(1.0, 1 - 2 * (x * x + y * y))))
-
-
 class Cameras:
     """Offscreen head-camera rendering on a pool of threads, each with its own GL context
     (MuJoCo releases the GIL while Mesa renders, so software GL uses every core)."""
@@ -266,18 +264,40 @@ class Cameras:
         self.vis.flags[mujoco.mjtVisFlag.mjVIS_RANGEFINDER] = 0
         self.vis.sitegroup[:] = 0
         self.pool = ThreadPoolExecutor(self.threads, thread_name_prefix="camera")
+        try:  # one GL context per thread, made now: a missing GL fails before any robot attaches
+            self._on_each_thread(self._open)
+        except Exception as e:
+            self.pool.shutdown()
+            raise RenderError(f"cannot render offscreen with MUJOCO_GL={os.environ.get('MUJOCO_GL', '')}: {e}") from None
 
     def describe(self):
         return f"{CAMERA_W}x{CAMERA_H}, {self.threads} render thread(s)"
 
-    def _renderer(self):
+    def _on_each_thread(self, fn):
+        """Runs fn once on every pool thread (each call holds its thread at a barrier
+        until all have started, so no thread takes two)."""
+        barrier = threading.Barrier(self.threads)
+
+        def call():
+            try:
+                fn()
+            finally:
+                barrier.wait(timeout=10)
+
+        for f in [self.pool.submit(call) for _ in range(self.threads)]:
+            f.result()
+
+    def _open(self):
+        self.local.renderer = mujoco.Renderer(self.m, height=CAMERA_H, width=CAMERA_W)
+
+    def _free(self):
         r = getattr(self.local, "renderer", None)
-        if r is None:
-            r = self.local.renderer = mujoco.Renderer(self.m, height=CAMERA_H, width=CAMERA_W)
-        return r
+        if r is not None:
+            r.close()  # EGL frees a context only on the thread that made it
+            self.local.renderer = None
 
     def _one(self, d, k, deliver):
-        r = self._renderer()
+        r = self.local.renderer
         with self.scene_lock:
             r.update_scene(d, camera=self.robots[k].camera, scene_option=self.vis)
         deliver(k, r.render())
@@ -287,16 +307,5 @@ class Cameras:
             f.result()  # re-raises a rendering or delivery error here
 
     def close(self):
-        """Free each GL context on the thread that made it (EGL refuses otherwise)."""
-        barrier = threading.Barrier(self.threads)
-
-        def free():
-            r = getattr(self.local, "renderer", None)
-            if r is not None:
-                r.close()
-                self.local.renderer = None
-            barrier.wait(timeout=10)  # keeps this thread busy so each thread gets one call
-
-        for f in [self.pool.submit(free) for _ in range(self.threads)]:
-            f.result()
+        self._on_each_thread(self._free)
         self.pool.shutdown()

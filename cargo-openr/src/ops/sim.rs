@@ -64,60 +64,61 @@ pub struct Plan {
     pub robots: Vec<Vec<OsString>>,
 }
 
-/// Runs the world until every runtime has ended; fails if a runtime or the peer failed.
+/// Exit status of the peer when MuJoCo or offscreen GL is not usable (`UNAVAILABLE` in peer.py).
+const PEER_UNAVAILABLE: i32 = 3;
+
+fn unavailable(python: &Path, why: &str) -> anyhow::Error {
+    anyhow::anyhow!(
+        "the MuJoCo simulator cannot start: {} (MUJOCO_GL={}): {why}\n\
+         help: install it with `tools/deps.sh` (pip mujoco=={MUJOCO_VERSION} in a venv, apt libegl1 libgl1-mesa-dri), \
+         or point OPENR_PYTHON at a Python that has it; `cargo openr doctor` checks",
+        python.display(),
+        gl_backend()
+    )
+}
+
+/// Runs the world until every runtime has ended. The peer checks MuJoCo and GL itself
+/// before any robot attaches (no separate probe: importing MuJoCo costs ~1 s); when
+/// anything fails, the rest is stopped rather than left waiting for its clock.
 pub fn run(plan: &Plan) -> anyhow::Result<()> {
-    if let Err(why) = probe(&plan.python) {
-        bail!(
-            "the MuJoCo simulator cannot start: {} (MUJOCO_GL={}): {why}\n\
-             help: install it with `tools/deps.sh` (pip mujoco=={MUJOCO_VERSION} in a venv, apt libegl1 libgl1-mesa-dri), \
-             or point OPENR_PYTHON at a Python that has it; `cargo openr doctor` checks",
-            plan.python.display(),
-            gl_backend()
-        );
-    }
     let dir = tempfile::Builder::new().prefix("cargo-openr-sim").tempdir().context("cannot create a socket directory")?;
     let exe = std::env::current_exe().context("cannot locate the cargo-openr executable")?;
     let labelled = plan.robots.len() > 1;
     let console = Arc::new(Mutex::new(()));
-    let mut sockets = Vec::new();
+    let sockets: Vec<PathBuf> = (0..plan.robots.len()).map(|k| dir.path().join(format!("robot{k}.sock"))).collect();
+    let mut cmd = Command::new(&plan.python);
+    cmd.arg(&plan.peer).args(&plan.peer_args).args(&sockets).env("MUJOCO_GL", gl_backend());
+    let mut peer = spawn(&mut cmd, false).map_err(|e| unavailable(&plan.python, &e.to_string()))?;
     let mut runtimes = Vec::new();
     let mut copiers = Vec::new();
-    for (k, args) in plan.robots.iter().enumerate() {
-        let sock = dir.path().join(format!("robot{k}.sock"));
+    for (k, (args, sock)) in plan.robots.iter().zip(&sockets).enumerate() {
         let mut cmd = Command::new(&exe);
-        cmd.arg("run").args(args).arg("--robot-socket").arg(&sock).arg("--robot-wait");
-        let mut child = spawn(&mut cmd, labelled).with_context(|| format!("cannot start the runtime of robot {k}"))?;
+        cmd.arg("run").args(args).arg("--robot-socket").arg(sock).arg("--robot-wait");
+        let mut child = match spawn(&mut cmd, labelled) {
+            Ok(c) => c,
+            Err(e) => {
+                stop_all(std::iter::once(&mut peer).chain(&mut runtimes));
+                return Err(e).with_context(|| format!("cannot start the runtime of robot {k}"));
+            }
+        };
         if labelled {
             let tag = format!("[robot {k}] ");
             copiers.push(copy_lines(child.stdout.take().unwrap(), tag.clone(), false, console.clone()));
             copiers.push(copy_lines(child.stderr.take().unwrap(), tag, true, console.clone()));
         }
         runtimes.push(child);
-        sockets.push(sock);
     }
-    let mut cmd = Command::new(&plan.python);
-    cmd.arg(&plan.peer).args(&plan.peer_args).args(&sockets).env("MUJOCO_GL", gl_backend());
-    let peer = spawn(&mut cmd, false).with_context(|| format!("cannot start {}", plan.python.display()));
-    let mut peer = match peer {
-        Ok(p) => p,
-        Err(e) => {
-            stop_all(&mut runtimes);
-            return Err(e);
-        }
-    };
-    let (peer_status, statuses) = wait_all(&mut peer, &mut runtimes);
+    let failed = wait_all(std::iter::once(&mut peer).chain(&mut runtimes).collect());
     for c in copiers {
         let _ = c.join();
     }
-    for (k, s) in statuses.iter().enumerate() {
-        if !s.success() {
-            bail!("robot {k}: the runtime failed ({s})");
-        }
+    // Report the child that failed first: the others were stopped because of it.
+    match failed {
+        None => Ok(()),
+        Some((0, s)) if s.code() == Some(PEER_UNAVAILABLE) => Err(unavailable(&plan.python, "see the peer's message above")),
+        Some((0, s)) => bail!("the MuJoCo simulator failed ({s}); its messages are above"),
+        Some((k, s)) => bail!("robot {}: the runtime failed ({s})", k - 1),
     }
-    if !peer_status.success() {
-        bail!("the MuJoCo simulator failed ({peer_status}); its messages are above");
-    }
-    Ok(())
 }
 
 /// Children end with us (PR_SET_PDEATHSIG), and leave Ctrl-C to the runtimes: they stop
@@ -136,35 +137,32 @@ fn spawn(cmd: &mut Command, piped: bool) -> std::io::Result<Child> {
     cmd.spawn()
 }
 
-/// Waits for the peer and every runtime. A peer that fails first would leave the
-/// runtimes waiting for their clock forever: they are stopped then.
-fn wait_all(peer: &mut Child, runtimes: &mut [Child]) -> (ExitStatus, Vec<ExitStatus>) {
+/// Waits for every child (the peer first, then the runtimes); the first one that fails
+/// stops the others — a runtime without its peer, or a peer without a runtime to
+/// attach to, would otherwise wait forever. Returns that first failure (index, status).
+fn wait_all(mut children: Vec<&mut Child>) -> Option<(usize, ExitStatus)> {
     // SAFETY: ignoring SIGINT in this process only; children set their own handlers.
     unsafe { libc::signal(libc::SIGINT, libc::SIG_IGN) };
-    let mut done: Vec<Option<ExitStatus>> = vec![None; runtimes.len()];
-    let mut peer_done = None;
-    loop {
-        for (k, c) in runtimes.iter_mut().enumerate() {
-            if done[k].is_none() {
-                done[k] = c.try_wait().ok().flatten();
+    let mut done: Vec<bool> = vec![false; children.len()];
+    let mut first_failure = None;
+    while done.iter().any(|d| !d) {
+        for (k, (c, d)) in children.iter_mut().zip(&mut done).enumerate() {
+            if let Some(status) = (!*d).then(|| c.try_wait().ok().flatten()).flatten() {
+                *d = true;
+                if !status.success() && first_failure.is_none() {
+                    first_failure = Some((k, status));
+                    stop_all(children.iter_mut().map(|c| &mut **c));
+                    break;
+                }
             }
-        }
-        if peer_done.is_none() {
-            peer_done = peer.try_wait().ok().flatten();
-            if peer_done.is_some_and(|s| !s.success()) {
-                stop_all(runtimes);
-            }
-        }
-        if peer_done.is_some() && done.iter().all(Option::is_some) {
-            break;
         }
         std::thread::sleep(Duration::from_millis(20));
     }
-    (peer_done.unwrap(), done.into_iter().map(Option::unwrap).collect())
+    first_failure
 }
 
-fn stop_all(runtimes: &mut [Child]) {
-    for c in runtimes {
+fn stop_all<'a>(children: impl IntoIterator<Item = &'a mut Child>) {
+    for c in children {
         if c.try_wait().ok().flatten().is_none() {
             // SAFETY: plain kill(2) of our own child.
             unsafe { libc::kill(c.id() as i32, libc::SIGTERM) };

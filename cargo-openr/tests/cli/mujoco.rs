@@ -275,7 +275,7 @@ fn simulator_errors_are_clear_and_nothing_hangs() {
     fs::write(&bad_scene, "<mujoco>\n  <worldbody>\n    <geom type=\"sphere\" size=\"oops\"/>\n  </worldbody>\n</mujoco>\n").unwrap();
     let cases: Vec<(Vec<String>, &str)> = vec![
         (vec!["--scene".into(), "/nonexistent/field.xml".into()], "--scene /nonexistent/field.xml: no such file"),
-        (vec!["--scene".into(), bad_scene.display().to_string()], "bad.xml"),
+        (vec!["--scene".into(), bad_scene.display().to_string()], "bad.xml: not a MuJoCo scene"),
         (vec!["--robots".into(), "0".into()], "give 1 to 30 robots"),
         (vec!["--sim-arg=--push=soon".into()], "--push soon: expected TIME:FX,FY,FZ"),
         (vec!["--robot-wait".into()], "attaches the simulator itself"),
@@ -290,8 +290,17 @@ fn simulator_errors_are_clear_and_nothing_hangs() {
     }
     let out = run_ms(&ms, &["--seed", "3"]);
     assert!(out.code != Some(0) && out.stderr.contains("--seed needs a simulated world: add `--sim mujoco`"), "{}", out.stderr);
-    // No MuJoCo where cargo-openr looks: say what installs it.
-    let out = crate::support::spawn_ms(&ms, &["--sim", "mujoco", "--for", "1s"], &[("OPENR_PYTHON", "/nonexistent/python3")]).wait(std::time::Duration::from_secs(60));
+    // A robot whose runtime fails stops the world at once (the peer would wait for it).
+    let started = std::time::Instant::now();
+    let out = run_ms(&dir.path().join("no-such-ms"), &["--sim", "mujoco", "--for", "1s"]);
     assert_ne!(out.code, Some(0));
-    assert!(out.stderr.contains("the MuJoCo simulator cannot start") && out.stderr.contains("tools/deps.sh"), "{}", out.stderr);
+    assert!(out.stderr.contains("robot 0: the runtime failed") && out.stderr.contains("No such file"), "{}", out.stderr);
+    assert!(started.elapsed() < std::time::Duration::from_secs(20), "took {:?}", started.elapsed());
+    // No MuJoCo where cargo-openr looks, or no usable GL: say what installs it.
+    for env in [("OPENR_PYTHON", "/nonexistent/python3"), ("MUJOCO_GL", "nonsense")] {
+        let out = crate::support::spawn_ms(&ms, &["--sim", "mujoco", "--for", "1s"], &[env]).wait(std::time::Duration::from_secs(60));
+        assert_ne!(out.code, Some(0), "{env:?}");
+        assert!(out.stderr.contains("the MuJoCo simulator cannot start") && out.stderr.contains("tools/deps.sh"), "{env:?}: {}", out.stderr);
+        assert!(!out.stderr.contains("Traceback"), "{}", out.stderr);
+    }
 }
