@@ -61,7 +61,6 @@ pub struct VrService {
     mic: Mutex<crate::audio::Mic>,
     /// Images are rendered only when a CONNECT.CFG line names the camera service.
     camera_wanted: std::sync::atomic::AtomicBool,
-    image: Mutex<Vec<u8>>,
     /// Frames run, and those that started more than a frame late (real-time speeds).
     pub frames: std::sync::atomic::AtomicU64,
     pub late_frames: std::sync::atomic::AtomicU64,
@@ -82,7 +81,6 @@ impl VrService {
             speaker: Mutex::new(speaker),
             mic: Mutex::new(mic),
             camera_wanted: std::sync::atomic::AtomicBool::new(false),
-            image: Mutex::new(Vec::new()),
             frames: std::sync::atomic::AtomicU64::new(0),
             late_frames: std::sync::atomic::AtomicU64::new(0),
             peers: crate::peer::Hub::default(),
@@ -162,12 +160,12 @@ impl VrService {
             self.publish_slice(rt, SERVICE_SENSOR, &vector);
         }
         if out.camera_due && self.camera_wanted.load(std::sync::atomic::Ordering::Acquire) {
-            let mut img = self.image.lock().unwrap_or_else(|p| p.into_inner());
-            self.robot().render_image(out.frame, &mut img);
-            let v = std::mem::take(&mut *img);
-            drop(img);
-            self.publish_slice(rt, SERVICE_IMAGE, &v);
-            *self.image.lock().unwrap_or_else(|p| p.into_inner()) = v;
+            let mut robot = self.robot();
+            let size = robot.image_vector_size();
+            if !self.publish(rt, SERVICE_IMAGE, size, |region| robot.render_image_into(out.frame, region)) {
+                // No region to deliver in: the camera still takes its picture (field counter).
+                robot.render_image(out.frame, &mut Vec::new());
+            }
         }
         if let Some((oid, sel)) = self.wiring().providers[SERVICE_SPEAKER] {
             for token in played.done {
@@ -194,20 +192,27 @@ impl VrService {
         }
     }
 
-    /// Copies a finished vector into a new shared region (the one copy of its data flow:
-    /// a region is never rewritten while an observer may hold it, robot-api 7) and hands
-    /// it, with the region's one reference, to the system object providing `service`.
+    /// Copies a finished vector into a new shared region and publishes it.
     fn publish_slice(&self, rt: &Runtime, service: usize, vector: &[u8]) {
-        let Some((oid, sel)) = self.wiring().providers[service] else { return };
-        let Some((mem_id, base)) = rt.shm.alloc(vector.len()) else { return };
-        // SAFETY: a fresh region of vector.len() bytes.
-        let region = unsafe { std::slice::from_raw_parts_mut(base, vector.len()) };
-        region.copy_from_slice(vector);
-        let _ = vectors::set_region_fields(region, mem_id, 0, vector.len() as u32);
-        let ev = VrEvent { kind: EVENT_DATA, service: service as u32, token: 0, mem_id, size: vector.len() as u32 };
+        self.publish(rt, service, vector.len(), |region| region.copy_from_slice(vector));
+    }
+
+    /// Has `fill` write a vector of `len` bytes into a new shared region (a region is
+    /// never rewritten while an observer may hold it, robot-api 7) and hands it, with
+    /// the region's one reference, to the system object providing `service`. False when
+    /// nobody provides the service or no region could be had (`fill` is not called).
+    fn publish(&self, rt: &Runtime, service: usize, len: usize, fill: impl FnOnce(&mut [u8])) -> bool {
+        let Some((oid, sel)) = self.wiring().providers[service] else { return false };
+        let Some((mem_id, base)) = rt.shm.alloc(len) else { return false };
+        // SAFETY: a fresh region of len bytes, ours until it is sent.
+        let region = unsafe { std::slice::from_raw_parts_mut(base, len) };
+        fill(region);
+        let _ = vectors::set_region_fields(region, mem_id, 0, len as u32);
+        let ev = VrEvent { kind: EVENT_DATA, service: service as u32, token: 0, mem_id, size: len as u32 };
         if rt.send(oid, sel, ev.bytes()).is_err() {
             rt.shm.unref(mem_id);
         }
+        true
     }
 
     pub fn flush_trace(&self) {

@@ -684,12 +684,17 @@ impl Camera {
         }
     }
 
-    /// Builds the complete image vector from `self.rgb` into `out` (resized to the
-    /// layout's size) and advances the field counter.
+    /// Bytes of one image vector ([`Camera::build_vector`]'s `out`).
+    pub fn vector_size(&self) -> usize {
+        self.layout.size()
+    }
+
+    /// Builds the complete image vector from `self.rgb` into `out` (at least
+    /// [`Camera::vector_size`] bytes: the shared region itself, so the vector is written
+    /// once) and advances the field counter.
     /// The camera settings are applied to `self.rgb` first.
-    pub fn build_vector(&mut self, primitive: PrimitiveId, frame: u32, out: &mut Vec<u8>) {
+    pub fn build_vector(&mut self, primitive: PrimitiveId, frame: u32, out: &mut [u8]) {
         self.settings.apply(&mut self.rgb.data);
-        out.resize(self.layout.size(), 0);
         self.layout.write_header(out, primitive, frame).expect("sized");
         self.last_counts = synthesize(&self.layout, &self.rgb.data, &self.lut, self.field_counter, out);
         self.field_counter = self.field_counter.wrapping_add(1);

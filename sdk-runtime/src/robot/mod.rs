@@ -522,6 +522,18 @@ impl VirtualRobot {
     /// primitive ID and `frameNumber` = `frame`, H/M/L/C layers and tags. The field
     /// counter advances by one per call.
     pub fn render_image(&mut self, frame: u32, out: &mut Vec<u8>) {
+        out.resize(self.camera.vector_size(), 0);
+        self.render_image_into(frame, out);
+    }
+
+    /// Bytes of one image vector.
+    pub fn image_vector_size(&self) -> usize {
+        self.camera.vector_size()
+    }
+
+    /// [`VirtualRobot::render_image`] into `out` of [`VirtualRobot::image_vector_size`]
+    /// bytes (the shared region the vector is delivered in).
+    pub fn render_image_into(&mut self, frame: u32, out: &mut [u8]) {
         if let Some(rgb) = &self.external_rgb {
             let n = self.camera.rgb.width * self.camera.rgb.height * 3;
             self.camera.rgb.data.clear();
