@@ -26,6 +26,7 @@ use std::path::Path;
 
 pub use compile::{cc_flags, cxx_flags, host_tool};
 pub use error::{Error, ErrorKind};
+pub use gzcp::gzip_file;
 pub use root::root_from_exe;
 
 /// One tool of the SDK root.

@@ -343,15 +343,9 @@ fn build_cxx(
     Ok(announced)
 }
 
+/// Installs `from` gzipped as `to`, atomically (as the SDK root's `gzcp` does).
 fn gzip(from: &Path, to: &Path) -> anyhow::Result<()> {
-    let out = Command::new("gzip").args(["-9", "-n", "-c"]).arg(from).output().context("cannot run gzip")?;
-    if !out.status.success() {
-        bail!("gzip {} failed: {}", from.display(), String::from_utf8_lossy(&out.stderr));
-    }
-    let tmp = to.with_extension("BIN.tmp");
-    fs::write(&tmp, &out.stdout)?;
-    fs::rename(&tmp, to)?;
-    Ok(())
+    openr_wrappers::gzip_file(from, to).with_context(|| format!("cannot install {}", to.display()))
 }
 
 fn build_rust(opts: &BuildOptions, project: &Path, o: &Object, objs_dir: &Path, emit: &mut dyn FnMut(Event)) -> anyhow::Result<bool> {
