@@ -318,17 +318,14 @@ fn build_cxx(
     if stale(&bin, &link_inputs) {
         announce(emit);
         fresh = false;
-        let mut link_args: Vec<std::ffi::OsString> = objs.iter().map(|p| p.clone().into_os_string()).collect();
-        link_args.push(format!("-L{}", root.join("OPEN_R/lib").display()).into());
-        link_args.push("-lObjectComm".into());
-        link_args.push("-lOPENR".into());
+        // mkbin adds `-L<root>/OPEN_R/lib` and the OPEN-R archives (default_libs) itself.
         let mk = openr_wrappers::mkbin::Options {
             verbose: false,
             output: Some(bin.clone()),
-            prefix: Some(root.clone()),
+            prefix: None,
             ocf: Some(ocf.clone()),
             default_libs: true,
-            link_args,
+            link_args: objs.iter().map(|p| p.clone().into_os_string()).collect(),
         };
         if let Err(e) = openr_wrappers::mkbin::link(&mk, root) {
             emit(Event::Message { object: o.name.clone(), level: "error", rendered: e.to_string() });
