@@ -1,6 +1,5 @@
 //! Robot design data (object-model 4.5, robot-api 12): `FindDesignData` loads the file
 //! DESIGNDB.CFG names for a keyword, gunzipped, into shared memory.
-use std::io::Read;
 
 use crate::runtime::Runtime;
 
@@ -18,13 +17,7 @@ pub fn find(rt: &Runtime, keyword: &str) -> Result<(u32, *mut u8, usize), u32> {
         let path = rt.design_db.iter().find(|(k, _)| k == keyword).map(|(_, p)| p).ok_or(O_NOT_FOUND)?;
         let host = rt.ms.existing(path).ok_or(O_NOT_FOUND)?;
         let raw = std::fs::read(host).map_err(|_| O_NOT_FOUND)?;
-        if raw.starts_with(&[0x1f, 0x8b]) {
-            let mut out = Vec::new();
-            flate2::read::GzDecoder::new(&raw[..]).read_to_end(&mut out).map_err(|_| O_FAIL)?;
-            out
-        } else {
-            raw
-        }
+        crate::loader::gunzip_if_gzip(raw).map_err(|_| O_FAIL)?
     };
     if content.is_empty() {
         return Err(O_DESIGNDATA_SIZE_ZERO);

@@ -5,7 +5,7 @@
 //! read its entry table.
 use std::ffi::{c_void, CStr, CString};
 use std::io::Read;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use crate::error::{Error, Result};
 
@@ -18,8 +18,6 @@ pub type MakePower = unsafe extern "C" fn(*const c_void, *mut c_void, usize) -> 
 
 /// A loaded object module.
 pub struct Module {
-    handle: *mut c_void,
-    pub so_path: PathBuf,
     entries: Vec<(u32, EntryFn)>,
     make_reason: MakeReason,
     make_connect: MakeConnect,
@@ -29,7 +27,8 @@ pub struct Module {
     pub ocf_name: Option<String>,
 }
 
-// The handle and function pointers are process-wide; the module's code is only run on
+// The function pointers are process-wide (objects are never unloaded: the process exits
+// instead); the module's code is only run on
 // its object's thread, but building messages (pure functions) may happen anywhere.
 unsafe impl Send for Module {}
 unsafe impl Sync for Module {}
@@ -39,20 +38,23 @@ const UNDEF: u32 = 0xffff_ffff;
 /// Reads a `.BIN`: gzip or plain ELF. Errors name the file and say what it is instead.
 pub fn read_bin(path: &Path) -> Result<Vec<u8>> {
     let raw = std::fs::read(path).map_err(|e| Error::io(path, e))?;
-    let elf = if raw.starts_with(&[0x1f, 0x8b]) {
-        let mut out = Vec::with_capacity(raw.len() * 3);
-        flate2::read::GzDecoder::new(&raw[..])
-            .read_to_end(&mut out)
-            .map_err(|e| Error::load(path, format!("corrupt gzip data: {e}")))?;
-        out
-    } else {
-        raw
-    };
+    let elf = gunzip_if_gzip(raw).map_err(|e| Error::load(path, format!("corrupt gzip data: {e}")))?;
     if !elf.starts_with(b"\x7fELF") {
         let what = if elf.is_empty() { "an empty file".to_string() } else { format!("starts with {:02x?}", &elf[..elf.len().min(4)]) };
         return Err(Error::load(path, format!("not an OPEN-R object: expected a gzipped or plain ELF shared object, found {what}")));
     }
     Ok(elf)
+}
+
+/// The data of a gzip file (mkbin's `.BIN`, gzcp'd design data), or `raw` itself when it
+/// is not gzip.
+pub fn gunzip_if_gzip(raw: Vec<u8>) -> std::io::Result<Vec<u8>> {
+    if !raw.starts_with(&[0x1f, 0x8b]) {
+        return Ok(raw);
+    }
+    let mut out = Vec::with_capacity(raw.len() * 3);
+    flate2::read::GzDecoder::new(&raw[..]).read_to_end(&mut out)?;
+    Ok(out)
 }
 
 impl Module {
@@ -91,8 +93,6 @@ impl Module {
         };
         let ocf_name = sym("openr_ocf_name").map(|p| unsafe { CStr::from_ptr(p.cast()) }.to_string_lossy().into_owned());
         Ok(Module {
-            handle,
-            so_path,
             entries,
             make_reason: unsafe { std::mem::transmute::<*mut c_void, MakeReason>(mr) },
             make_connect: unsafe { std::mem::transmute::<*mut c_void, MakeConnect>(mc) },
@@ -107,10 +107,6 @@ impl Module {
         self.entries.iter().find(|(s, _)| *s == selector).map(|(_, f)| *f)
     }
 
-    pub fn selectors(&self) -> impl Iterator<Item = u32> + '_ {
-        self.entries.iter().map(|(s, _)| *s)
-    }
-
     pub fn reason_message(&self, reason: u32) -> Vec<u8> {
         build(|buf, cap| unsafe { (self.make_reason)(reason, buf, cap) })
     }
@@ -122,13 +118,6 @@ impl Module {
 
     pub fn status_of(&self, reply: &[u8]) -> u32 {
         unsafe { (self.read_status)(reply.as_ptr().cast(), reply.len()) }
-    }
-}
-
-impl Drop for Module {
-    fn drop(&mut self) {
-        // Objects are never unloaded while their thread may run; the process exits instead.
-        let _ = self.handle;
     }
 }
 
