@@ -109,8 +109,9 @@ pub mod new {
             COMMON[3], COMMON[4],
             file!("{{subject.class}}/Cargo.toml", "rust-object/Cargo.toml.hbs"),
             file!("{{subject.class}}/src/lib.rs", "rust-object/lib.rs.hbs"),
-            file!("{{observer.class}}/Makefile", "rust-object/observer.Makefile.hbs"),
-            file!("{{observer.class}}/{{observer.target}}.ocf", "rust-object/observer.ocf.hbs"),
+            // The common Makefile and ocf for the observer alone: `obj` is the first object.
+            File { per_object: false, ..COMMON[1] },
+            File { per_object: false, ..COMMON[2] },
             file!("{{observer.class}}/stub.cfg", "subject-observer/observer.stub.cfg.hbs"),
             file!("{{observer.class}}/{{observer.class}}.h", "subject-observer/observer.h.hbs"),
             file!("{{observer.class}}/{{observer.class}}.cc", "subject-observer/observer.cc.hbs"),
