@@ -1,6 +1,9 @@
 //! `cargo openr new <name> [--template hello|subject-observer|walk|rust-object] [--path DIR]`
 use std::path::PathBuf;
 
+use clap::builder::{PossibleValue, PossibleValuesParser};
+use openr_templates::new::TEMPLATES;
+
 use crate::ops::new::{self, NewOptions};
 use crate::shell::Shell;
 
@@ -9,11 +12,16 @@ pub struct Args {
     /// Project name: letters, digits, `-`, `_`; gives the object classes (`my-dog` → MyDog) and .BIN names (MYDOG.BIN)
     name: String,
     /// Project template
-    #[arg(long, default_value = "hello", value_parser = clap::builder::PossibleValuesParser::new(["hello", "subject-observer", "walk", "rust-object"]))]
+    #[arg(long, default_value = "hello", value_parser = templates())]
     template: String,
     /// Directory to create (default: ./<name>); must not exist or be empty
     #[arg(long, value_name = "DIR")]
     path: Option<PathBuf>,
+}
+
+/// The `--template` values: every template of `openr_templates`, its `about` as help.
+fn templates() -> PossibleValuesParser {
+    PossibleValuesParser::new(TEMPLATES.iter().map(|t| PossibleValue::new(t.name).help(t.about)))
 }
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
