@@ -310,7 +310,12 @@ unsafe extern "C" fn get_clock(sec: *mut i64, dif: *mut i32) {
 
 extern "C" fn set_clock(sec: i64, dif: i32) {
     if let Some(rt) = rt() {
+        let old = rt.clock.calendar().1;
         rt.clock.set_calendar(sec, dif);
+        if old != dif {
+            // OPowerStatus.timeDif is the same setting: GetPowerStatus and observers see it.
+            crate::boot::update_power(rt, |s| s.time_dif = dif);
+        }
     }
 }
 

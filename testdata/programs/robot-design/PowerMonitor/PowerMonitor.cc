@@ -32,6 +32,9 @@ PowerMonitor::DoStart(const OSystemEvent& event)
 {
     OSYSDEBUG(("PowerMonitor::DoStart()\n"));
 
+    // This robot's clock keeps Japan time (UTC+9): the power status reports it too.
+    OPENR::SetTimeDifference(9);
+
     OPowerStatus currentStatus;
     OStatus result = OPENR::GetPowerStatus(&currentStatus);
     if (result != oSUCCESS) {
@@ -117,11 +120,12 @@ PowerMonitor::UpdatePowerStatus(void* msg)
 void
 PowerMonitor::PrintPowerStatus(const char* who, const OPowerStatus& status)
 {
-    OSYSPRINT(("%s robotStatus 0x%08x batteryStatus 0x%04x capacity %d%%\n",
+    OSYSPRINT(("%s robotStatus 0x%08x batteryStatus 0x%04x capacity %d%% timeDif %d\n",
                who,
                (unsigned int)status.robotStatus,
                (unsigned int)status.batteryStatus,
-               (int)status.remainingCapacity));
+               (int)status.remainingCapacity,
+               (int)status.timeDif));
 
     OSYSPRINT(("    pause %s, motor power %s, battery %s%s\n",
                (status.robotStatus & orsbPAUSE)              ? "ON" : "OFF",
