@@ -11,7 +11,7 @@ impl Shell {
         Shell { quiet: false }
     }
 
-    #[allow(dead_code)]
+    /// No status lines or warnings from now on (errors and stdout results still appear).
     pub fn set_quiet(&mut self, quiet: bool) {
         self.quiet = quiet;
     }

@@ -132,6 +132,7 @@ fn sdk_root(root: PathBuf) -> anyhow::Result<PathBuf> {
 }
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
+    shell.set_quiet(args.quiet);
     check_sim_options(&args)?;
     let ms_dir = args.ms_dirs[0].clone();
     let project = ms_dir.parent().map(PathBuf::from);
@@ -156,21 +157,14 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         diag: Diag { quiet: args.quiet, verbose: args.verbose },
         lenient_connect: args.lenient_connect,
     };
-    if !args.quiet {
-        shell.status("Running", &ms_dir.display().to_string());
-    }
+    shell.status("Running", &ms_dir.display().to_string());
     let outcome = boot::run(&opts).with_context(|| format!("cannot run {}", ms_dir.display()))?;
-    if !args.quiet {
-        let how = match outcome.ended {
-            Ended::TimeUp => "time limit reached".to_string(),
-            Ended::Signal(s) => format!("signal {s}"),
-            Ended::Shutdown => "OPENR::Shutdown".to_string(),
-        };
-        shell.status(
-            "Finished",
-            &format!("{} ({how}; {} frames, {} late)", ms_dir.display(), outcome.frames, outcome.late_frames),
-        );
-    }
+    let how = match outcome.ended {
+        Ended::TimeUp => "time limit reached".to_string(),
+        Ended::Signal(s) => format!("signal {s}"),
+        Ended::Shutdown => "OPENR::Shutdown".to_string(),
+    };
+    shell.status("Finished", &format!("{} ({how}; {} frames, {} late)", ms_dir.display(), outcome.frames, outcome.late_frames));
     Ok(())
 }
 
@@ -258,10 +252,8 @@ fn simulate(args: &Args, root: &Path, shell: &mut Shell) -> anyhow::Result<()> {
     }
     peer_args.extend(args.sim_args.iter().map(Into::into));
     let plan = sim::Plan { python: sim::python(), peer: root.join(install::SIM_DIR).join("peer.py"), peer_args, robots: plans };
-    if !args.quiet {
-        let what = if robots == 1 { "1 robot".to_string() } else { format!("{robots} robots") };
-        shell.status("Simulating", &format!("{} in MuJoCo ({what})", args.ms_dirs[0].display()));
-    }
+    let what = if robots == 1 { "1 robot".to_string() } else { format!("{robots} robots") };
+    shell.status("Simulating", &format!("{} in MuJoCo ({what})", args.ms_dirs[0].display()));
     sim::run(&plan)
 }
 
