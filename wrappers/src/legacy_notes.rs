@@ -1,19 +1,21 @@
 //! What `-fpermissive` cannot make g++ 12 accept from gcc-3.3-era code (legacy-code 1):
 //! the compiler's error stays as it is, and a `note:` line with the same file:line says
 //! why it compiled on the robot toolchain and what to change.
+use std::collections::HashMap;
 use std::path::Path;
 
 /// Notes for the diagnostics in `stderr` (g++'s `file:line:col: error: …` lines).
 pub fn notes(stderr: &str, cwd: &Path) -> Vec<String> {
+    let mut sources = Sources { cwd, files: HashMap::new() };
     let mut out: Vec<String> = Vec::new();
     for line in stderr.lines() {
         let Some((loc, msg)) = line.split_once(": error: ") else { continue };
         let note = if msg.contains("need \u{2018}typename\u{2019} before") || msg.contains("need 'typename' before") {
             Some("gcc 3.3 accepted a dependent type without `typename` (implicit typename, removed in gcc 3.4); g++ 12 cannot: add `typename` before it".to_string())
-        } else if msg.starts_with("redefinition of") && is_parameter_redefinition(loc, cwd) {
+        } else if msg.starts_with("redefinition of") && is_parameter_redefinition(sources.before(loc, 1)) {
             Some("gcc 3.3 accepted the same parameter name twice in one declaration; g++ 12 cannot: rename one of the parameters".to_string())
         } else if let Some(name) = undeclared_name(msg) {
-            declared_in_earlier_for(loc, &name, cwd).then(|| {
+            declared_in_earlier_for(sources.before(loc, 60), &name).then(|| {
                 format!("`{name}` is declared in an earlier `for` statement: gcc 3.3's old for-scope rule kept it visible after the loop; g++ 12 has no switch for that: declare `{name}` before the loop")
             })
         } else {
@@ -36,25 +38,37 @@ fn undeclared_name(msg: &str) -> Option<String> {
     (!name.is_empty() && name.chars().all(|c| c.is_alphanumeric() || c == '_')).then(|| name.to_string())
 }
 
-/// The source line of a `file:line:col` location.
-fn source_line(loc: &str, cwd: &Path) -> Option<(Vec<String>, usize)> {
-    let mut parts = loc.rsplitn(3, ':');
-    let _col = parts.next()?;
-    let line: usize = parts.next()?.parse().ok()?;
-    let file = parts.next()?;
-    let text = std::fs::read_to_string(cwd.join(file)).ok()?;
-    Some((text.lines().map(str::to_string).collect(), line))
+/// The source files the diagnostics name, each read once.
+struct Sources<'a> {
+    cwd: &'a Path,
+    files: HashMap<String, Option<Vec<String>>>,
 }
 
-fn is_parameter_redefinition(loc: &str, cwd: &Path) -> bool {
+impl Sources<'_> {
+    /// Up to `count` source lines ending with the line of a `file:line:col` location
+    /// (none when the file cannot be read or the line is not in it: `#line` can say anything).
+    fn before(&mut self, loc: &str, count: usize) -> &[String] {
+        let mut parts = loc.rsplitn(3, ':');
+        let (Some(_col), Some(line), Some(file)) = (parts.next(), parts.next(), parts.next()) else { return &[] };
+        let Ok(line) = line.parse::<usize>() else { return &[] };
+        let cwd = self.cwd;
+        let lines = self.files.entry(file.to_string()).or_insert_with(|| {
+            std::fs::read_to_string(cwd.join(file)).ok().map(|t| t.lines().map(str::to_string).collect())
+        });
+        match lines {
+            Some(lines) if (1..=lines.len()).contains(&line) => &lines[line.saturating_sub(count)..line],
+            _ => &[],
+        }
+    }
+}
+
+fn is_parameter_redefinition(line: &[String]) -> bool {
     // g++ reports it inside a parameter list: the line has '(' before the column.
-    source_line(loc, cwd).is_some_and(|(lines, n)| lines.get(n - 1).is_some_and(|l| l.contains('(')))
+    line.last().is_some_and(|l| l.contains('('))
 }
 
-fn declared_in_earlier_for(loc: &str, name: &str, cwd: &Path) -> bool {
-    let Some((lines, n)) = source_line(loc, cwd) else { return false };
-    let start = n.saturating_sub(60);
-    lines[start..n.min(lines.len())].iter().any(|l| {
+fn declared_in_earlier_for(lines: &[String], name: &str) -> bool {
+    lines.iter().any(|l| {
         let l: String = l.split_whitespace().collect::<Vec<_>>().join(" ");
         l.find("for (").or_else(|| l.find("for(")).is_some_and(|i| {
             let head = &l[i..];
@@ -85,5 +99,16 @@ mod tests {
         assert!(n[0].starts_with("a.cc:1:31: note: [cargo-openr] gcc 3.3 accepted a dependent type without `typename`"));
         assert!(n[1].starts_with("a.cc:4:10: note: [cargo-openr] `i` is declared in an earlier `for` statement"));
         assert!(n[2].starts_with("a.cc:6:30: note: [cargo-openr] gcc 3.3 accepted the same parameter name twice"));
+    }
+
+    #[test]
+    fn locations_outside_the_file_get_no_note_and_no_panic() {
+        // `#line 200` makes g++ name lines the file does not have; line 0 is not a line.
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("a.cc"), "#line 200\nint g() { return i; }\n").unwrap();
+        let err = "a.cc:200:19: error: \u{2018}i\u{2019} was not declared in this scope\n\
+                   a.cc:0:1: error: redefinition of \u{2018}int a\u{2019}\n\
+                   gone.cc:3:1: error: \u{2018}i\u{2019} was not declared in this scope\n";
+        assert!(notes(err, dir.path()).is_empty());
     }
 }
