@@ -77,20 +77,22 @@ pub(crate) fn run(lang: Lang, args: Vec<OsString>) -> Result<i32, Error> {
 pub fn host_tool(name: &str, env_overrides: &[&str]) -> Result<PathBuf, Error> {
     for var in env_overrides {
         if let Some(v) = std::env::var_os(var).filter(|v| !v.is_empty()) {
-            return which::which(&v).map_err(|_| missing(&v.to_string_lossy(), var));
+            return which::which(&v).map_err(|_| missing(name, &v.to_string_lossy(), &format!("named by {var}")));
         }
     }
-    which::which(name).map_err(|_| missing(name, "PATH"))
+    which::which(name).map_err(|_| missing(name, name, "in PATH"))
 }
 
-fn missing(tool: &str, from: &str) -> Error {
-    let pkg = match tool {
+/// `tool` (what was looked for, `where_`) is missing; the package is the one that
+/// provides `name` (the role, e.g. g++, whatever an override called it).
+fn missing(name: &str, tool: &str, where_: &str) -> Error {
+    let pkg = match name {
         "g++" => "g++",
         "gcc" => "gcc",
         _ => "binutils",
     };
     ErrorKind::MissingHostTool {
-        tool: format!("{tool}` (from {from})"),
+        tool: format!("`{tool}` ({where_})"),
         hint: format!("install it with `apt-get install {pkg}` (or run `cargo openr doctor`)"),
     }
     .into()

@@ -50,7 +50,7 @@ impl fmt::Display for Error {
             ErrorKind::Usage(m) => write!(f, "{m}"),
             ErrorKind::Io { path, source } => write!(f, "{}: {source}", path.display()),
             ErrorKind::MissingHostTool { tool, hint } => {
-                write!(f, "host tool `{tool}` not found in PATH; {hint}")
+                write!(f, "host tool {tool} not found; {hint}")
             }
             ErrorKind::CommandFailed { command, status } => {
                 write!(f, "running the following command failed ({status}):\n  {command}")

@@ -189,3 +189,22 @@ fn compiler_wrapper_explains_what_only_gcc_3_3_accepted() {
     assert!(log.contains("Old.cc:1:") && log.contains("note: [cargo-openr] gcc 3.3 accepted the same parameter name twice"), "{log}");
     assert!(log.contains("Old.cc:5:") && log.contains("note: [cargo-openr] `i` is declared in an earlier `for` statement"), "{log}");
 }
+
+#[test]
+fn a_missing_host_compiler_is_named_with_where_it_was_looked_for() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("a.cc"), "int f() { return 1; }\n").unwrap();
+    let out = Command::new(tool("bin/mipsel-linux-g++"))
+        .args(["-c", "a.cc"])
+        .env("OPENR_HOST_CXX", "nonexistent-gxx")
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("host tool `nonexistent-gxx` (named by OPENR_HOST_CXX) not found; install it with `apt-get install g++`"),
+        "{err}"
+    );
+    assert!(!dir.path().join("a.o").exists());
+}
