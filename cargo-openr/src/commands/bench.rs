@@ -1,9 +1,7 @@
 //! `cargo openr bench`: runtime benchmarks (figures recorded in the README).
 use std::path::PathBuf;
 
-use anyhow::Context;
-
-use crate::ops::bench;
+use crate::ops::{bench, sdk};
 use crate::shell::Shell;
 
 #[derive(Debug, clap::Args)]
@@ -14,11 +12,11 @@ pub struct Args {
 }
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
-    let exe = std::env::current_exe().context("cannot locate cargo-openr")?;
+    let exe = sdk::exe()?;
     let work = args.repo.join("target/bench");
     std::fs::create_dir_all(&work)?;
     let root = std::path::absolute(work.join("sdk"))?;
-    openr_wrappers::install::install(&root, &exe).context("installing the SDK root")?;
+    sdk::prepare(&root)?;
     shell.status("Benchmarking", "bench/programs (real objects, real runtime)");
     let figs = bench::run_all(&exe, &std::path::absolute(&args.repo)?, &root, &std::path::absolute(&work)?)?;
     for f in figs {

@@ -1,13 +1,12 @@
 //! `cargo openr build [--release] [--message-format json] [-p OBJECT]... [--path DIR]`
 use std::path::PathBuf;
 
-use anyhow::Context;
-use openr_wrappers::install;
 use serde_json::json;
 
 use crate::ops::build::{self, BuildOptions, Event};
 use crate::ops::config::{self, ConfigInputs};
 use crate::ops::diag::MessageFormat;
+use crate::ops::sdk;
 use crate::shell::Shell;
 
 #[derive(Debug, clap::Args)]
@@ -32,8 +31,7 @@ pub struct Args {
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let cfg = config::resolve(&ConfigInputs { sdk: args.sdk, project: Some(args.path.clone()), ..Default::default() })?;
     let root = cfg.sdk.value;
-    let exe = std::env::current_exe().context("cannot locate the cargo-openr executable")?;
-    install::install(&root, &exe).with_context(|| format!("cannot prepare the SDK root {}", root.display()))?;
+    sdk::prepare(&root)?;
     let opts = BuildOptions { dir: args.path.clone(), sdk: root, release: args.release, packages: args.packages };
     let json = args.message_format == MessageFormat::Json;
     let mut emit = |e: Event| match (&e, json) {

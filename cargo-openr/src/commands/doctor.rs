@@ -1,10 +1,8 @@
 //! `cargo openr doctor`: host tools, Python/MuJoCo, GL, the SDK root — ok or how to fix.
 use std::path::PathBuf;
 
-use anyhow::Context;
-
 use crate::ops::config::{self, ConfigInputs};
-use crate::ops::doctor;
+use crate::ops::{doctor, sdk};
 use crate::shell::Shell;
 
 #[derive(Debug, clap::Args)]
@@ -26,7 +24,7 @@ pub enum Format {
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let cfg = config::resolve(&ConfigInputs { sdk: args.sdk, project: Some(PathBuf::from(".")), ..Default::default() })?;
-    let exe = std::env::current_exe().context("cannot locate the cargo-openr executable")?;
+    let exe = sdk::exe()?;
     let findings = doctor::diagnose(&cfg.sdk.value, &exe);
     match args.format {
         Format::Json => {

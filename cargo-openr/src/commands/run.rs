@@ -9,7 +9,7 @@ use sdk_runtime::boot::{self, Ended, RunOptions};
 use sdk_runtime::runtime::Diag;
 
 use crate::ops::config::{self, ConfigInputs};
-use crate::ops::sim;
+use crate::ops::{sdk, sim};
 use crate::shell::Shell;
 
 #[derive(Debug, clap::Args)]
@@ -122,22 +122,16 @@ pub fn parse_duration(s: &str) -> Result<Duration, String> {
     Ok(Duration::from_secs_f64(v * mult))
 }
 
-/// The SDK root whose system objects this run loads, as `ops::config` resolves it
-/// (`--sdk`, `$OPENRSDK_ROOT` when it is one of ours, `openr.toml`, the per-user
-/// default); installed or updated if needed.
-fn sdk_root(root: PathBuf) -> anyhow::Result<PathBuf> {
-    let exe = std::env::current_exe().context("cannot locate the cargo-openr executable")?;
-    install::install(&root, &exe).with_context(|| format!("cannot prepare the SDK root {}", root.display()))?;
-    Ok(root)
-}
-
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     shell.set_quiet(args.quiet);
     check_sim_options(&args)?;
     let ms_dir = args.ms_dirs[0].clone();
     let project = ms_dir.parent().map(PathBuf::from);
     let cfg = config::resolve(&ConfigInputs { sdk: args.sdk.clone(), design: args.design.clone(), speed: args.speed.clone(), project })?;
-    let root = sdk_root(cfg.sdk.value)?;
+    // The SDK root whose system objects this run loads, as `ops::config` resolves it
+    // (`--sdk`, `$OPENRSDK_ROOT` when it is one of ours, `openr.toml`, the per-user default).
+    let root = cfg.sdk.value;
+    sdk::prepare(&root)?;
     if args.sim == Sim::Mujoco {
         return simulate(&args, &root, shell);
     }

@@ -4,6 +4,7 @@ use std::path::PathBuf;
 use anyhow::Context;
 use openr_wrappers::install::{self, Outcome};
 
+use crate::ops::sdk;
 use crate::shell::Shell;
 
 #[derive(Debug, clap::Args)]
@@ -28,10 +29,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         _ => install::default_prefix().context("cannot find a home directory; pass --prefix DIR")?,
     };
     let prefix = std::path::absolute(&prefix).unwrap_or(prefix);
-    let exe = std::env::current_exe().context("cannot locate the cargo-openr executable")?;
-    let outcome = install::install(&prefix, &exe)
-        .with_context(|| format!("failed to install the SDK root at {}", prefix.display()))?;
-    match outcome {
+    match sdk::prepare(&prefix)? {
         Outcome::Installed => shell.status("Installed", &format!("OPEN-R SDK root at {}", prefix.display())),
         Outcome::UpToDate => shell.status("Fresh", &format!("OPEN-R SDK root at {}", prefix.display())),
     }

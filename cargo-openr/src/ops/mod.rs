@@ -7,4 +7,5 @@ pub mod diag;
 pub mod doctor;
 pub mod env;
 pub mod new;
+pub mod sdk;
 pub mod sim;

@@ -82,7 +82,7 @@ fn unavailable(python: &Path, why: &str) -> anyhow::Error {
 /// anything fails, the rest is stopped rather than left waiting for its clock.
 pub fn run(plan: &Plan) -> anyhow::Result<()> {
     let dir = tempfile::Builder::new().prefix("cargo-openr-sim").tempdir().context("cannot create a socket directory")?;
-    let exe = std::env::current_exe().context("cannot locate the cargo-openr executable")?;
+    let exe = crate::ops::sdk::exe()?;
     let labelled = plan.robots.len() > 1;
     let console = Arc::new(Mutex::new(()));
     let sockets: Vec<PathBuf> = (0..plan.robots.len()).map(|k| dir.path().join(format!("robot{k}.sock"))).collect();
