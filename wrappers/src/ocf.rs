@@ -33,10 +33,11 @@ pub fn parse(path: &Path, text: &str) -> Result<Ocf, Error> {
     if first != "object" {
         return Err(err(first_line, format!("expected the word `object`, found `{first}`")));
     }
-    let values: Vec<&str> = words[1..].iter().map(|(_, w)| *w).collect();
-    // 7-value form, or the 14-value form whose last six fields match the short form's.
-    let v: [&str; 7] = match values.len() {
-        7 => values[..].try_into().unwrap(),
+    // (line, word) of each value: the 7-value form, or the 14-value form whose last six
+    // fields match the short form's.
+    let values = &words[1..];
+    let v: [(usize, &str); 7] = match values.len() {
+        7 => values.try_into().unwrap(),
         14 => [values[0], values[6], values[7], values[10], values[11], values[12], values[13]],
         n => {
             return Err(err(
@@ -45,8 +46,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Ocf, Error> {
             ))
         }
     };
-    let line_of = |value: &str| words.iter().find(|(_, w)| *w == value).map_or(first_line, |(l, _)| *l);
-    let size = |field: &str, value: &str| -> Result<u64, Error> {
+    let size = |field: &str, (line, value): (usize, &str)| -> Result<u64, Error> {
         let (digits, mult) = match value.strip_suffix(['k', 'K']) {
             Some(d) => (d, 1024),
             None => (value, 1),
@@ -54,18 +54,17 @@ pub fn parse(path: &Path, text: &str) -> Result<Ocf, Error> {
         digits
             .parse::<u64>()
             .map(|n| n * mult)
-            .map_err(|_| err(line_of(value), format!("{field} must be a number (optionally with a K suffix), found `{value}`")))
+            .map_err(|_| err(line, format!("{field} must be a number (optionally with a K suffix), found `{value}`")))
     };
+    let (prio_line, prio) = v[3];
     Ok(Ocf {
-        name: v[0].to_string(),
+        name: v[0].1.to_string(),
         stack: size("STACK", v[1])?,
         heap: size("HEAP", v[2])?,
-        priority: v[3]
-            .parse()
-            .map_err(|_| err(line_of(v[3]), format!("PRIO must be a number, found `{}`", v[3])))?,
-        cache: v[4] == "cache",
-        tlb: v[5] == "tlb",
-        user_mode: v[6] == "user",
+        priority: prio.parse().map_err(|_| err(prio_line, format!("PRIO must be a number, found `{prio}`")))?,
+        cache: v[4].1 == "cache",
+        tlb: v[5].1 == "tlb",
+        user_mode: v[6].1 == "user",
     })
 }
 
@@ -112,6 +111,13 @@ mod tests {
         assert!(e.starts_with("x.ocf:1: ocf format error: expected 7 values"), "{e}");
         let e = p("object a 1\n zz 3 cache tlb user").unwrap_err().to_string();
         assert!(e.starts_with("x.ocf:2: ocf format error: HEAP must be a number"), "{e}");
+        // The line of the value itself, even when the same word stood earlier.
+        let e = p("object zz 1\nzz 3 cache tlb user").unwrap_err().to_string();
+        assert!(e.starts_with("x.ocf:2: ocf format error: HEAP must be a number (optionally with a K suffix), found `zz`"), "{e}");
+        let e = p("object a\n4k\n1 x cache tlb user").unwrap_err().to_string();
+        assert!(e.starts_with("x.ocf:3: ocf format error: PRIO must be a number, found `x`"), "{e}");
+        let e = p("object a 1q 2 3 cache tlb user").unwrap_err().to_string();
+        assert!(e.starts_with("x.ocf:1: ocf format error: STACK must be a number"), "{e}");
         let e = p("  # only a comment\n").unwrap_err().to_string();
         assert!(e.contains("empty file"), "{e}");
     }
