@@ -10,7 +10,6 @@ use crate::robot::{vectors, Gain, VirtualRobot};
 use crate::runtime::Runtime;
 
 const O_NO_MEMORY: u32 = 5;
-const O_NOT_SUPPORTED: u32 = 3;
 
 fn with_robot<T>(f: impl FnOnce(&mut VirtualRobot) -> T) -> Option<T> {
     Runtime::get().map(|rt| f(&mut rt.vr.robot()))

@@ -33,6 +33,9 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
+# No __pycache__ beside the sources: sdk-runtime embeds this directory, and a new cache
+# file there would rebuild the runtime and reinstall the SDK root.
+sys.dont_write_bytecode = True
 os.environ.setdefault("MUJOCO_GL", "egl")
 
 import robot_peer as rp  # noqa: E402  (protocol codec: the reference client)

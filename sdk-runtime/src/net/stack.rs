@@ -702,7 +702,6 @@ fn tcp_connect(st: &mut State, cfg: &NetConfig, id: u32, p: Pending) {
         }
         Err(e) => p.fail(tcp_error(e)),
     }
-    let _ = cfg;
 }
 
 /// Advances everything pending on a TCP endpoint without blocking.
