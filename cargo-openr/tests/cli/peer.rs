@@ -17,8 +17,12 @@ const HELLO: u16 = 1;
 const WELCOME: u16 = 2;
 const FRAME: u16 = 3;
 const READINGS: u16 = 4;
+const IMAGE: u16 = 5;
+const MIC: u16 = 6;
 const ERROR: u16 = 10;
 const ROLE_JOINTS: u32 = 1;
+const ROLE_CAMERA: u32 = 16;
+const ROLE_MIC: u32 = 32;
 const FLAG_CLOCK: u32 = 1;
 const LF_J1: &str = "PRM:/r2/c1-Joint2:21";
 
@@ -259,27 +263,57 @@ fn a_peer_attaching_mid_run_and_leaving_loses_no_frame() {
     assert!(after.iter().any(|r| j1_at(r).abs() > 5.0), "and follows the commands again");
 }
 
-/// Connects, optionally says HELLO, sends `bytes`, expects an ERROR with `code` and EOF.
-fn expect_error(sock: &Path, greet: Option<(u32, u32)>, bytes: &[u8], code: u16) {
+/// Connects, optionally says HELLO, sends `bytes`, expects an ERROR with `code` and EOF;
+/// returns the ERROR's message.
+fn expect_error(sock: &Path, greet: Option<(u32, u32)>, bytes: &[u8], code: u16) -> String {
     let mut s = connect_unix(sock, Duration::from_secs(60));
     s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
     if let Some((roles, flags)) = greet {
         send(&mut s, HELLO, 0, &hello(roles, flags));
         assert_eq!(recv(&mut s).unwrap().0, WELCOME);
     }
+    refused(&mut s, bytes, code)
+}
+
+/// Sends `bytes` on an attached connection, expects an ERROR with `code` (only FRAMEs
+/// before it) and then EOF; returns the ERROR's message.
+fn refused(s: &mut UnixStream, bytes: &[u8], code: u16) -> String {
     s.write_all(bytes).unwrap();
-    loop {
-        let (kind, _, p) = recv(&mut s).unwrap_or_else(|| panic!("no ERROR {code}"));
+    let text = loop {
+        let (kind, _, p) = recv(s).unwrap_or_else(|| panic!("no ERROR {code}"));
         if kind == ERROR {
-            assert_eq!(u16_at(&p, 0), code, "{}", String::from_utf8_lossy(&p[4..]));
-            break;
+            let n = u16_at(&p, 2) as usize;
+            let text = String::from_utf8(p[4..4 + n].to_vec()).unwrap();
+            assert_eq!(u16_at(&p, 0), code, "{text}");
+            assert_eq!(p.len(), 4 + n, "ERROR payload: code u16, message str");
+            break text;
         }
         assert_eq!(kind, FRAME, "only FRAMEs before the ERROR");
-    }
+    };
     // then the connection is closed: only FRAMEs already in flight can't follow an ERROR
     let mut rest = Vec::new();
     let _ = s.read_to_end(&mut rest);
     assert!(rest.is_empty(), "nothing after the ERROR ({} bytes)", rest.len());
+    text
+}
+
+/// Attaches with HELLO claiming `roles` (and the clock when `flags` asks) and returns the
+/// connection and its WELCOME once all of it is granted. A peer refused just before may
+/// still hold a role for a moment (its detach follows its closed socket): retried.
+fn attach(sock: &Path, roles: u32, flags: u32) -> (UnixStream, Vec<u8>) {
+    for _ in 0..200 {
+        let mut s = connect_unix(sock, Duration::from_secs(60));
+        s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+        send(&mut s, HELLO, 0, &hello(roles, flags));
+        let (kind, _, w) = recv(&mut s).expect("WELCOME");
+        assert_eq!(kind, WELCOME);
+        if u32_at(&w, 4) == roles && u32_at(&w, 8) == flags & FLAG_CLOCK {
+            return (s, w);
+        }
+        drop(s);
+        std::thread::sleep(Duration::from_millis(25));
+    }
+    panic!("roles {roles:#x} / flags {flags:#x} never granted");
 }
 
 #[test]
@@ -317,4 +351,125 @@ fn bad_input_gets_an_error_and_a_closed_connection_and_the_robot_runs_on() {
     assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
     assert!(out.stderr.contains("500 frames"), "every frame ran: {}", out.stderr);
     assert!(out.stdout.contains("MovingLegs : "), "{}", out.stdout);
+}
+
+/// Asks the control socket (`--control`) one command; returns its answer line.
+fn control(conn: &mut UnixStream, cmd: &str) -> String {
+    use std::io::BufRead;
+    writeln!(conn, "{cmd}").unwrap();
+    let mut line = String::new();
+    std::io::BufReader::new(conn.try_clone().unwrap()).read_line(&mut line).unwrap();
+    line.trim().to_string()
+}
+
+fn image(w: u16, h: u16, rgb: usize) -> Vec<u8> {
+    let mut p = w.to_le_bytes().to_vec();
+    p.extend_from_slice(&h.to_le_bytes());
+    p.resize(4 + rgb, 0x80);
+    p
+}
+
+/// READINGS with `joints` in the joint section and `sensors` in the sensor section.
+fn readings2(joints: &[(u32, i32)], sensors: &[(u32, i32)]) -> Vec<u8> {
+    let mut p = readings(joints);
+    p.truncate(p.len() - 2);
+    p.extend_from_slice(&(sensors.len() as u16).to_le_bytes());
+    for (id, v) in sensors {
+        p.extend_from_slice(&id.to_le_bytes());
+        p.extend_from_slice(&v.to_le_bytes());
+    }
+    p
+}
+
+fn msg(kind: u16, frame: u32, payload: &[u8]) -> Vec<u8> {
+    message(kind, 1, payload.len() as u32, frame, payload)
+}
+
+#[test]
+fn role_payload_order_and_overflow_errors_name_the_problem() {
+    let b = build("movelegs");
+    let dir = tempfile::tempdir().unwrap();
+    let sock = dir.path().join("robot.sock");
+    let ctl = dir.path().join("control.sock");
+    let run = spawn_ms(&b.ms(), &["--speed", "1", "--robot-socket", sock.to_str().unwrap(), "--control", ctl.to_str().unwrap()], &[]);
+    // the primitive table, from a peer claiming nothing
+    let ids = {
+        let (_s, w) = attach(&sock, 0, 0);
+        welcome_ids(&w)
+    };
+    let (j1, accel, led) = (ids[LF_J1], ids["PRM:/a1-Sensor:a1"], ids["PRM:/r1/c1/c2/c3/ln-LED3:ln"]);
+    let unknown = 0xDEAD_BEEF;
+    assert!(!ids.values().any(|&v| v == unknown));
+    let mut said: Vec<(u16, String)> = Vec::new();
+    let mut check = |code: u16, got: String, want: &str| {
+        assert_eq!(got, want, "ERROR {code}");
+        said.push((code, got));
+    };
+
+    // 8: role not held
+    let t = expect_error(&sock, Some((0, 0)), &msg(IMAGE, 0, &image(416, 320, 416 * 320 * 3)), 8);
+    check(8, t, "IMAGE without the camera role");
+    let t = expect_error(&sock, Some((0, 0)), &msg(MIC, 0, &[0; 1024]), 8);
+    check(8, t, "MIC without the mic role");
+    let t = expect_error(&sock, Some((0, 0)), &msg(READINGS, 0, &readings2(&[], &[(accel, 9_800_000)])), 8);
+    check(8, t, "READINGS: PRM:/a1-Sensor:a1 needs the accel role, which this peer does not hold");
+    let t = expect_error(&sock, Some((0, 0)), &msg(READINGS, 0, &readings(&[(j1, 0)])), 8);
+    check(8, t, &format!("READINGS: {LF_J1} needs the joints role, which this peer does not hold"));
+
+    // 5: malformed payloads
+    let want_image = format!("IMAGE must be u16 width 416, u16 height 320, then {} RGB bytes", 416 * 320 * 3);
+    let (mut s, _) = attach(&sock, ROLE_CAMERA, 0);
+    let t = refused(&mut s, &msg(IMAGE, 0, &image(208, 160, 208 * 160 * 3)), 5);
+    check(5, t, &want_image);
+    let (mut s, _) = attach(&sock, ROLE_CAMERA, 0);
+    let t = refused(&mut s, &msg(IMAGE, 0, &image(416, 320, 416 * 320 * 3 - 1)), 5);
+    check(5, t, &want_image);
+    let (mut s, _) = attach(&sock, ROLE_MIC, 0);
+    let t = refused(&mut s, &msg(MIC, 0, &[0; 1022]), 5);
+    check(5, t, "MIC: 16-bit stereo PCM (a multiple of 4 bytes)");
+    let (mut s, _) = attach(&sock, ROLE_JOINTS, 0);
+    let t = refused(&mut s, &msg(READINGS, 0, &readings(&[(unknown, 0)])), 5);
+    check(5, t, "READINGS: unknown primitive ID 0xdeadbeef");
+    let (mut s, _) = attach(&sock, ROLE_JOINTS, 0);
+    let t = refused(&mut s, &msg(READINGS, 0, &readings2(&[], &[(j1, 0)])), 5);
+    check(5, t, &format!("READINGS: {LF_J1} ({j1:#x}) listed in the wrong section"));
+    let t = expect_error(&sock, Some((0, 0)), &msg(READINGS, 0, &readings2(&[], &[(led, 1)])), 5);
+    check(5, t, &format!("READINGS: PRM:/r1/c1/c2/c3/ln-LED3:ln ({led:#x}) has no readings"));
+
+    // 9: at most 1 MiB of microphone sound queued (exactly 1 MiB is accepted)
+    let (mut s, _) = attach(&sock, ROLE_MIC, 0);
+    s.write_all(&msg(MIC, 0, &vec![0; 1 << 20])).unwrap();
+    let t = refused(&mut s, &msg(MIC, 0, &vec![0; 64 << 10]), 9);
+    check(9, t, "MIC: more than 1048576 bytes queued");
+
+    // 7: a second HELLO
+    let t = expect_error(&sock, Some((0, 0)), &msg(HELLO, 0, &hello(0, 0)), 7);
+    check(7, t, "HELLO twice");
+
+    // 6: READINGS from the clock owner while no frame awaits them (the robot paused)
+    let mut c = connect_unix(&ctl, Duration::from_secs(60));
+    c.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    assert!(control(&mut c, "pause").starts_with("ok t_ms="));
+    let (mut s, w) = attach(&sock, ROLE_JOINTS, FLAG_CLOCK);
+    let last = u32_at(&w, 16);
+    assert!(last > 0, "frames ran before the pause");
+    let t = refused(&mut s, &msg(READINGS, last, &readings(&[])), 6);
+    check(6, t, &format!("READINGS for frame {last} while no frame awaits readings (last FRAME sent: {last})"));
+    let before = control(&mut c, "status");
+    assert!(control(&mut c, "resume").starts_with("ok"));
+
+    // the robot ran on: the clock advances after the resume, and every refusal was logged
+    let t_ms = |a: &str| a.split_whitespace().find_map(|w| w.strip_prefix("t_ms=")).and_then(|v| v.parse::<u64>().ok()).unwrap_or_else(|| panic!("{a}"));
+    let started = std::time::Instant::now();
+    while t_ms(&control(&mut c, "status")) <= t_ms(&before) {
+        assert!(started.elapsed() < Duration::from_secs(30), "the robot did not run on after the errors");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let out = run.stop();
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(!out.stderr.contains("panicked"), "{}", out.stderr);
+    for (code, text) in said {
+        let line = format!("robot peer `test`: {text} (error {code}; connection closed)");
+        assert!(out.stderr.contains(&line), "stderr lacks {line:?}:\n{}", out.stderr);
+    }
 }
