@@ -124,7 +124,7 @@ pub fn parse_duration(s: &str) -> Result<Duration, String> {
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     shell.set_quiet(args.quiet);
-    check_sim_options(&args)?;
+    let world = check_sim_options(&args)?;
     let ms_dir = args.ms_dirs[0].clone();
     let project = ms_dir.parent().map(PathBuf::from);
     let cfg = config::resolve(&ConfigInputs { sdk: args.sdk.clone(), design: args.design.clone(), speed: args.speed.clone(), project })?;
@@ -133,7 +133,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let root = cfg.sdk.value;
     sdk::prepare(&root)?;
     if args.sim == Sim::Mujoco {
-        return simulate(&args, &root, shell);
+        return simulate(&args, &world, &root, shell);
     }
     sdk_runtime::net::config::apply_cli(args.net_bind, args.port_offset);
     let opts = RunOptions {
@@ -162,8 +162,16 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Options that only make sense with the MuJoCo simulator, and those it owns itself.
-fn check_sim_options(args: &Args) -> anyhow::Result<()> {
+/// One robot of the MuJoCo world: the MS_DIR its runtime boots and the address its
+/// network endpoints bind to.
+struct Robot<'a> {
+    ms: &'a Path,
+    ip: std::net::Ipv4Addr,
+}
+
+/// Options that only make sense with the MuJoCo simulator, and those it owns itself;
+/// with `--sim mujoco`, the robots of the world (none otherwise).
+fn check_sim_options(args: &Args) -> anyhow::Result<Vec<Robot<'_>>> {
     if args.sim != Sim::Mujoco {
         let given = [
             (args.ms_dirs.len() > 1, "several MS_DIRs"),
@@ -175,7 +183,7 @@ fn check_sim_options(args: &Args) -> anyhow::Result<()> {
         if let Some((_, what)) = given.iter().find(|(g, _)| *g) {
             anyhow::bail!("{what} needs a simulated world: add `--sim mujoco`");
         }
-        return Ok(());
+        return Ok(Vec::new());
     }
     if args.robot_socket.is_some() || args.robot_tcp.is_some() || args.robot_wait {
         anyhow::bail!("--sim mujoco attaches the simulator itself: drop --robot-socket/--robot-tcp/--robot-wait");
@@ -189,18 +197,27 @@ fn check_sim_options(args: &Args) -> anyhow::Result<()> {
             anyhow::bail!("--scene {}: no such file", scene.display());
         }
     }
-    Ok(())
+    // Robot k runs MS_DIR k (the last one for the rest), on its own address on loopback
+    // (127.0.0.1, .2, …) with the same ports.
+    let base_ip = args.net_bind.unwrap_or(std::net::Ipv4Addr::LOCALHOST);
+    let mut world = Vec::new();
+    for k in 0..robots {
+        let ip = u32::from(base_ip).checked_add(k as u32).map(std::net::Ipv4Addr::from);
+        let Some(ip) = ip.filter(|ip| ip.is_loopback() == base_ip.is_loopback()) else {
+            anyhow::bail!("--net-bind {base_ip}: no room for {robots} consecutive robot addresses");
+        };
+        world.push(Robot { ms: &args.ms_dirs[k.min(args.ms_dirs.len() - 1)], ip });
+    }
+    Ok(world)
 }
 
-/// `--sim mujoco`: robot k runs MS_DIR k (the last one for the rest) in its own
-/// runtime; the peer in the SDK root simulates them all.
-fn simulate(args: &Args, root: &Path, shell: &mut Shell) -> anyhow::Result<()> {
-    let robots = args.robots.unwrap_or(args.ms_dirs.len());
-    let base_ip = args.net_bind.unwrap_or(std::net::Ipv4Addr::LOCALHOST);
+/// `--sim mujoco`: each robot of `world` in its own runtime; the peer in the SDK root
+/// simulates them all.
+fn simulate(args: &Args, world: &[Robot], root: &Path, shell: &mut Shell) -> anyhow::Result<()> {
+    let robots = world.len();
     let mut plans = Vec::new();
-    for k in 0..robots {
-        let ms = &args.ms_dirs[k.min(args.ms_dirs.len() - 1)];
-        let mut a: Vec<OsString> = vec![ms.into(), "--sdk".into(), root.into()];
+    for (k, robot) in world.iter().enumerate() {
+        let mut a: Vec<OsString> = vec![robot.ms.into(), "--sdk".into(), root.into()];
         let mut opt = |name: &str, v: Option<OsString>| {
             if let Some(v) = v {
                 a.push(name.into());
@@ -210,7 +227,7 @@ fn simulate(args: &Args, root: &Path, shell: &mut Shell) -> anyhow::Result<()> {
         opt("--for", args.run_for.map(|d| format!("{}ms", d.as_millis()).into()));
         opt("--design", args.design.clone().map(Into::into));
         opt("--speed", args.speed.clone().map(Into::into));
-        opt("--trace", args.trace.as_ref().map(|t| per_robot(t, k, robots).into()));
+        opt("--trace", args.trace.as_ref().map(|t| per_robot(t, k).into()));
         opt("--images", args.images.clone().map(Into::into));
         // The world's pause button and the sound files belong to robot 0: pausing one
         // runtime holds the lockstep of all.
@@ -219,12 +236,7 @@ fn simulate(args: &Args, root: &Path, shell: &mut Shell) -> anyhow::Result<()> {
             opt("--speaker-wav", args.speaker_wav.clone().map(Into::into));
             opt("--mic-wav", args.mic_wav.clone().map(Into::into));
         }
-        // Each robot its own address on loopback (127.0.0.1, .2, …), same ports.
-        let ip = u32::from(base_ip).checked_add(k as u32).map(std::net::Ipv4Addr::from);
-        let Some(ip) = ip.filter(|ip| ip.is_loopback() == base_ip.is_loopback()) else {
-            anyhow::bail!("--net-bind {base_ip}: no room for {robots} consecutive robot addresses");
-        };
-        opt("--net-bind", Some(ip.to_string().into()));
+        opt("--net-bind", Some(robot.ip.to_string().into()));
         opt("--port-offset", (args.port_offset != 0).then(|| args.port_offset.to_string().into()));
         for (on, flag) in [(args.lenient_connect, "--lenient-connect"), (args.quiet, "--quiet"), (args.verbose, "--verbose")] {
             if on {
@@ -251,9 +263,9 @@ fn simulate(args: &Args, root: &Path, shell: &mut Shell) -> anyhow::Result<()> {
     sim::run(&plan)
 }
 
-/// `t.jsonl` for robot 0 and a single robot, `t.r1.jsonl` for robot 1, …
-fn per_robot(path: &Path, k: usize, robots: usize) -> PathBuf {
-    if robots == 1 || k == 0 {
+/// `t.jsonl` for robot 0 (so for a single robot), `t.r1.jsonl` for robot 1, …
+fn per_robot(path: &Path, k: usize) -> PathBuf {
+    if k == 0 {
         return path.to_path_buf();
     }
     let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();

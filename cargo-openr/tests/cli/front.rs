@@ -285,3 +285,12 @@ fn doctor_reports_the_host_and_the_sdk_root() {
     let human = String::from_utf8_lossy(&out.stdout);
     assert!(human.contains("/nonexistent/sdk is not installed") && human.contains("fix: cargo openr sdk install --prefix /nonexistent/sdk"), "{human}");
 }
+
+#[test]
+fn net_bind_without_room_for_every_robot_fails_before_the_world_starts() {
+    let b = crate::support::build("hello");
+    let out = run_ms(&b.ms(), &["--sim", "mujoco", "--net-bind", "127.255.255.255", "--robots", "2", "--for", "1s"]);
+    assert_ne!(out.code, Some(0), "{}", out.stderr);
+    assert!(out.stderr.contains("--net-bind 127.255.255.255: no room for 2 consecutive robot addresses"), "{}", out.stderr);
+    assert!(!out.stderr.contains("Simulating") && !out.stderr.contains("robot 0"), "nothing may start:\n{}", out.stderr);
+}
