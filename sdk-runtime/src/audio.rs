@@ -15,7 +15,9 @@ use crate::error::{Error, Result};
 use crate::robot::vectors;
 
 /// Mic block: 16 ms of 16 kHz stereo 16-bit (robot-api 8.6, ERS-7).
-const MIC_BLOCK_BYTES: usize = 1024;
+pub const MIC_BLOCK_BYTES: usize = 1024;
+/// The microphones' PCM: rate, channels, bits.
+pub const MIC_FORMAT: (u32, u16, u16) = (16000, 2, 16);
 /// Speaker tokens live apart from effector tokens.
 const FIRST_SPEAKER_TOKEN: u64 = 1 << 40;
 

@@ -20,7 +20,7 @@ use std::os::unix::net::{UnixListener, UnixStream};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 
-use crate::audio::Format;
+use crate::audio::{Format, MIC_BLOCK_BYTES as MIC_BLOCK, MIC_FORMAT};
 use crate::error::{Error, ErrorKind, Result};
 use crate::robot::model::{PrimitiveKind, SensorKind};
 use crate::robot::{PendingFrame, PrimitiveId, Readings, VirtualRobot};
@@ -39,8 +39,6 @@ pub struct PeerOptions {
 
 /// Microphone sound a peer may queue ahead (16 s).
 const MIC_QUEUE_MAX: usize = 1 << 20;
-/// Bytes of one microphone block (16 ms of 16 kHz stereo 16-bit).
-const MIC_BLOCK: usize = 1024;
 
 enum Conn {
     Unix(UnixStream),
@@ -371,7 +369,7 @@ fn welcome_payload(rt: &Runtime, granted: u32, clock: bool) -> Vec<u8> {
     o.u16(VERSION).u16(REVISION).u32(granted).u32(if clock { FLAG_CLOCK } else { 0 });
     o.u32(8000).u32(frame).u64(time_ms);
     o.u16(w as u16).u16(h as u16).u16(design.camera_fps() as u16);
-    o.u16(design.mic_period_frames() as u16).u16(MIC_BLOCK as u16).u32(16000).u16(2).u16(16);
+    o.u16(design.mic_period_frames() as u16).u16(MIC_BLOCK as u16).u32(MIC_FORMAT.0).u16(MIC_FORMAT.1).u16(MIC_FORMAT.2);
     o.str(design.name());
     o.u16(model.primitives().len() as u16);
     for p in model.primitives() {
