@@ -146,7 +146,7 @@ struct Context<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     observer: Option<&'a ObjectNames>,
     /// The `openr` crate of this checkout (Rust objects depend on it by path).
-    openr_path: String,
+    openr_path: &'a str,
 }
 
 /// The `openr` crate of the checkout this binary was built from (there is no crates.io
@@ -162,12 +162,12 @@ pub fn render(name: &str, template: &Template, objects: &[ObjectNames]) -> Resul
     hb.register_escape_fn(handlebars::no_escape);
     hb.set_strict_mode(true);
     let role = |r: &str| template.objects.iter().position(|o| *o == r).map(|i| &objects[i]);
+    let openr_path = openr_crate_path().display().to_string();
     let mut out = Vec::new();
     for file in template.files {
         let targets: Vec<&ObjectNames> = if file.per_object { objects.iter().collect() } else { vec![&objects[0]] };
         for obj in targets {
-            let openr_path = openr_crate_path().display().to_string();
-            let ctx = Context { name, objects, obj, subject: role("subject"), observer: role("observer"), openr_path };
+            let ctx = Context { name, objects, obj, subject: role("subject"), observer: role("observer"), openr_path: &openr_path };
             let r = |t: &str| hb.render_template(t, &ctx).map_err(|e| NewError::Render(format!("{}: {e}", file.path)));
             out.push((PathBuf::from(r(file.path)?), r(file.source)?));
         }
