@@ -124,13 +124,11 @@ fn is_empty_dir(p: &Path) -> bool {
     fs::read_dir(p).is_ok_and(|mut d| d.next().is_none())
 }
 
+/// The executable's bytes carry the whole payload (headers, C++ sources, simulator are
+/// embedded in it), so they alone say whether an installed root is this one.
 fn payload_hash(exe: &[u8]) -> String {
     let mut h = DefaultHasher::new();
     exe.hash(&mut h);
-    for (p, b) in sdk_files::INCLUDE.iter().chain(sdk_files::CXX).chain(sdk_files::SIM) {
-        p.hash(&mut h);
-        b.hash(&mut h);
-    }
     format!("{}-{:016x}", env!("CARGO_PKG_VERSION"), h.finish())
 }
 
