@@ -45,7 +45,10 @@ fn a_missing_or_bad_mic_wav_is_a_clear_error() {
     let p = build("hello");
     let out = run_ms(&p.ms(), &["--for", "1s", "--mic-wav", "/nonexistent/mic.wav"]);
     assert_ne!(out.code, Some(0));
-    assert!(out.stderr.contains("/nonexistent/mic.wav") && !out.stderr.contains("panicked"), "{}", out.stderr);
+    assert!(!out.stderr.contains("panicked"), "{}", out.stderr);
+    let want = format!("error: cannot run {}: /nonexistent/mic.wav: No such file or directory", p.ms().display());
+    assert!(out.stderr.contains(&want), "the run fails naming the file and the OS reason:\n{}", out.stderr);
+    assert!(!out.stdout.contains("Hello World"), "no object ran:\n{}", out.stdout);
     let dir = tempfile::tempdir().unwrap();
     let bad = dir.path().join("bad.wav");
     fs::write(&bad, b"RIFF\x04\x00\x00\x00WAVE").unwrap();

@@ -240,7 +240,13 @@ fn a_crash_keeps_what_other_objects_printed() {
 // ---- bad Memory Stick trees ----
 
 fn run_err(ms: &std::path::Path) -> String {
-    let out = run_ms(ms, &["--for", "1s"]);
+    run_err_with(ms, &[])
+}
+
+/// `run_err` with more options.
+fn run_err_with(ms: &std::path::Path, extra: &[&str]) -> String {
+    let args: Vec<&str> = ["--for", "1s"].iter().chain(extra).copied().collect();
+    let out = run_ms(ms, &args);
     assert_ne!(out.code, Some(0), "must fail\nstdout:\n{}\nstderr:\n{}", out.stdout, out.stderr);
     assert!(!out.stderr.contains("panicked"), "no panic:\n{}", out.stderr);
     out.stderr
@@ -251,6 +257,23 @@ fn a_directory_without_object_cfg_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     let err = run_err(dir.path());
     assert!(err.contains("OPEN-R/MW/CONF/OBJECT.CFG: not found"), "{err}");
+}
+
+#[test]
+fn a_memory_stick_path_that_does_not_exist_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let ms = dir.path().join("NO-SUCH-MS");
+    let err = run_err(&ms);
+    let ms = ms.display();
+    assert!(err.contains(&format!("error: cannot run {ms}: {ms}: No such file or directory")), "{err}");
+}
+
+#[test]
+fn an_unknown_robot_design_is_refused_with_the_known_ones() {
+    let p = build("hello");
+    let err = run_err_with(&p.ms(), &["--design", "ERS-9"]);
+    assert!(err.contains(&format!("error: cannot run {}: unknown robot design `ERS-9` (known: ERS-7, ERS-210, ERS-220)", p.ms().display())), "{err}");
+    assert!(!err.contains("Hello World"), "no object ran");
 }
 
 #[test]
@@ -301,9 +324,16 @@ fn connect_cfg_with_an_unknown_service_lists_the_registered_ones() {
     let err = run_err(&p.ms());
     assert!(err.contains("CONNECT.CFG:1: unknown service `SampleObserver.ReceiveStrng.char.O`"), "{err}");
     assert!(err.contains("SampleObserver.ReceiveString.char.O") && err.contains("SampleSubject.SendString.char.S"), "lists what exists: {err}");
-    // The robot's behaviour is available on request.
+    // The robot's behaviour is available on request: a warning, the line skipped.
     let out = run_ms(&p.ms(), &["--for", "500ms", "--lenient-connect"]);
     assert_ok(&out);
+    let warning = out
+        .stderr
+        .lines()
+        .find(|l| l.contains("CONNECT.CFG:1: unknown service `SampleObserver.ReceiveStrng.char.O`; registered services: "))
+        .unwrap_or_else(|| panic!("no warning for the skipped line:\n{}", out.stderr));
+    assert!(warning.starts_with("warning: ") && warning.ends_with(" (line skipped)"), "{warning}");
+    assert!(warning.contains("SampleObserver.ReceiveString.char.O"), "lists what exists: {warning}");
 }
 
 #[test]
