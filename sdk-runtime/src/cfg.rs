@@ -171,6 +171,23 @@ mod tests {
         let (_d, ms) = stick(&[("OPEN-R/MW/CONF/OBJECT.CFG", "/MS/A.BIN\n"), ("a.bin", "")]);
         let (_, objs) = object_cfg(&ms, "ERS-7").unwrap();
         assert_eq!(objs[0].host_path, ms.root().join("a.bin"));
+        // more than one field on a line (the line number counts comments, sections, CRLF)
+        for (text, want) in [
+            ("# x\n/MS/A.BIN /MS/B.BIN\n", ":2: expected one path per line (/MS/OPEN-R/MW/OBJS/XXXXXXXX.BIN), found `/MS/A.BIN /MS/B.BIN`"),
+            ("/MS/A.BIN\r\n\r\n[ERS-7]\r\n/MS/A.BIN\tERS7\r\n", ":4: expected one path per line (/MS/OPEN-R/MW/OBJS/XXXXXXXX.BIN), found `/MS/A.BIN ERS7`"),
+        ] {
+            let (_d, ms) = stick(&[("OPEN-R/MW/CONF/OBJECT.CFG", text), ("a.bin", "")]);
+            let e = object_cfg(&ms, "ERS-7").unwrap_err().to_string();
+            assert_eq!(e, format!("{}{want}", ms.root().join("OPEN-R/MW/CONF/OBJECT.CFG").display()));
+        }
+        // nothing for this design: names the file (no line: the whole file is at fault)
+        for text in ["# only comments\n\n", "[ERS-210]\n/MS/A.BIN\n"] {
+            let (_d, ms) = stick(&[("OPEN-R/MW/CONF/OBJECT.CFG", text), ("a.bin", "")]);
+            let e = object_cfg(&ms, "ERS-7").unwrap_err().to_string();
+            assert_eq!(e, format!("{}: lists no object for robot design ERS-7", ms.root().join("OPEN-R/MW/CONF/OBJECT.CFG").display()));
+        }
+        let (_d, ms) = stick(&[("OPEN-R/MW/CONF/OBJECT.CFG", "[ERS-210]\n/MS/A.BIN\n"), ("a.bin", "")]);
+        assert_eq!(object_cfg(&ms, "ERS-210").unwrap().1.len(), 1);
     }
 
     #[test]
