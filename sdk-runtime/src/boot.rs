@@ -85,20 +85,21 @@ const SHUTDOWN_TIMEOUT: Duration = Duration::from_secs(3);
 /// Loads and runs the stick until it ends; returns how it ended.
 pub fn run(opts: &RunOptions) -> Result<Outcome> {
     let ms = MsDir::new(&opts.ms_dir).map_err(|e| Error::io(&opts.ms_dir, e))?;
+    // The design first: it selects the CFG sections read next.
+    let mut robot = crate::robot::VirtualRobot::from_design_name(&opts.design).ok_or_else(|| {
+        let known: Vec<&str> = crate::robot::model::Design::ALL.iter().map(|d| d.name()).collect();
+        ErrorKind::Runtime(format!("unknown robot design `{}` (known: {})", opts.design, known.join(", ")))
+    })?;
     let (object_cfg_path, objects) = cfg::object_cfg(&ms, &opts.design)?;
     let (connect_path, connections) = cfg::connect_cfg(&ms, &opts.design)?;
     let design_db = cfg::design_db(&ms, &opts.design)?;
     // Read every image before starting anything, so a bad .BIN fails the run cleanly.
     let images: Vec<Vec<u8>> = objects.iter().map(|o| loader::read_bin(&o.host_path)).collect::<Result<_>>()?;
     let system_images: Vec<Vec<u8>> = opts.system_objects.iter().map(|p| loader::read_bin(p)).collect::<Result<_>>()?;
-    let robot = crate::robot::VirtualRobot::from_design_name(&opts.design).ok_or_else(|| {
-        ErrorKind::Runtime(format!("unknown robot design `{}` (known: ERS-7, ERS-210, ERS-220)", opts.design))
-    })?;
     let mic_pcm = match &opts.mic_wav {
         Some(p) => crate::audio::read_wav_as_mic(p)?,
         None => Vec::new(),
     };
-    let mut robot = robot;
     if let Some(p) = &opts.images {
         robot.set_image_source(Some(p)).map_err(|e| Error::config(p, None, format!("cannot use as camera images: {e}")))?;
     }

@@ -162,6 +162,8 @@ fn robot_design_selects_sections_and_reads_design_data() {
     assert_ok(&out);
     assert!(out.stdout.contains("OPENR::GetRobotDesign() : ERS-7"), "{}", out.stdout);
     assert!(out.stdout.contains("SAMPLE_DATA : This is an ERS-7 (DRX-1000)."), "{}", out.stdout);
+    // PowerMonitor sets the time difference to +9 first: GetPowerStatus reports it.
+    assert!(out.stdout.contains("PowerMonitor::DoStart() robotStatus") && out.stdout.contains("timeDif 9\n"), "{}", out.stdout);
     let out = run_ms(&p.ms(), &["--for", "1s", "--design", "ERS-220"]);
     assert_ok(&out);
     assert!(out.stdout.contains("OPENR::GetRobotDesign() : ERS-220"), "ERS-220 section and its gzipped data file:\n{}", out.stdout);
@@ -274,6 +276,10 @@ fn an_unknown_robot_design_is_refused_with_the_known_ones() {
     let err = run_err_with(&p.ms(), &["--design", "ERS-9"]);
     assert!(err.contains(&format!("error: cannot run {}: unknown robot design `ERS-9` (known: ERS-7, ERS-210, ERS-220)", p.ms().display())), "{err}");
     assert!(!err.contains("Hello World"), "no object ran");
+    // Also where OBJECT.CFG has only design sections (the design is checked first).
+    let p = build("robot-design");
+    let err = run_err_with(&p.ms(), &["--design", "ERS-9"]);
+    assert!(err.contains("unknown robot design `ERS-9` (known: ERS-7, ERS-210, ERS-220)"), "{err}");
 }
 
 #[test]

@@ -48,6 +48,8 @@ pub enum Design {
 }
 
 impl Design {
+    pub const ALL: [Design; 3] = [Design::Ers7, Design::Ers210, Design::Ers220];
+
     pub fn name(self) -> &'static str {
         match self {
             Design::Ers7 => "ERS-7",
@@ -56,12 +58,7 @@ impl Design {
         }
     }
     pub fn from_name(name: &str) -> Option<Design> {
-        match name {
-            "ERS-7" => Some(Design::Ers7),
-            "ERS-210" => Some(Design::Ers210),
-            "ERS-220" => Some(Design::Ers220),
-            _ => None,
-        }
+        Design::ALL.into_iter().find(|d| d.name() == name)
     }
     /// Camera frames per second (robot-api 8.4).
     pub fn camera_fps(self) -> u32 {
