@@ -16,7 +16,7 @@ use std::collections::{BTreeMap, HashSet};
 use std::path::{Path, PathBuf};
 
 use sdk_runtime::cfg::{lines_for_design, CfgFile};
-use sdk_runtime::ms::MsDir;
+use sdk_runtime::ms::{is_eight_dot_three, MsDir};
 
 use crate::ops::diag::{Diagnostic, Report};
 
@@ -139,17 +139,6 @@ pub fn check(opts: &CheckOptions) -> anyhow::Result<Report> {
     Ok(report)
 }
 
-/// FAT 8.3: a base of 1–8 characters, an optional extension of 1–3, allowed characters
-/// only (object-model 1.5). Case is not checked here.
-pub fn is_8_3(name: &str) -> bool {
-    const SPECIAL: &str = "$&#{}~%'()-@^`!_";
-    let ok = |s: &str, max: usize| (1..=max).contains(&s.len()) && s.chars().all(|c| c.is_ascii_alphanumeric() || SPECIAL.contains(c));
-    match name.split_once('.') {
-        Some((base, ext)) => ok(base, 8) && ok(ext, 3),
-        None => ok(name, 8),
-    }
-}
-
 /// Every name under `MS/OPEN-R` (dot files, host-only placeholders such as `.keep`, are
 /// skipped).
 fn check_names(dir: &Path, shown: &dyn Fn(&Path) -> PathBuf, report: &mut Report) {
@@ -162,7 +151,7 @@ fn check_names(dir: &Path, shown: &dyn Fn(&Path) -> PathBuf, report: &mut Report
             continue;
         }
         let path = e.path();
-        if !is_8_3(&name) {
+        if !is_eight_dot_three(&name) {
             report.push(
                 Diagnostic::error("E0001", format!("`{name}` is not an 8.3 file name"))
                     .at(shown(&path), None)
@@ -395,16 +384,6 @@ fn suggest(name: &str, services: &BTreeMap<String, Origin>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn eight_dot_three() {
-        for ok in ["OPEN-R", "OBJECT.CFG", "MVLEGS.BIN", "ERS-210.TXT", "A", "X$~1.B"] {
-            assert!(is_8_3(ok), "{ok}");
-        }
-        for bad in ["TOOLONGNAME.BIN", "A.TOOL", "A.B.C", ".KEEP", "A B.TXT", "", "A."] {
-            assert!(!is_8_3(bad), "{bad}");
-        }
-    }
 
     #[test]
     fn service_names() {

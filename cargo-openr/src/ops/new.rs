@@ -117,7 +117,7 @@ pub fn object_names(name: &str, template: &Template) -> Result<Vec<ObjectNames>,
             return Err(bad(format!("`{class}` is not a C identifier")));
         }
         let bin = format!("{bin_stem}.BIN");
-        if !crate::ops::check::is_8_3(&bin) || bin.chars().any(|c| c.is_ascii_lowercase()) {
+        if !sdk_runtime::ms::is_eight_dot_three(&bin) || bin.chars().any(|c| c.is_ascii_lowercase()) {
             return Err(bad(format!("`{bin}` is not an 8.3 upper-case file name")));
         }
         let target = {
