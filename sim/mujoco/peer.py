@@ -43,13 +43,28 @@ import robot_peer as rp  # noqa: E402  (protocol codec: the reference client)
 # Exit status 3: MuJoCo or offscreen GL is not usable here (cargo openr says how to install).
 UNAVAILABLE = 3
 try:
-    from bridge import GAIN_SCALE, Bridge, stand  # noqa: E402  (these import numpy and mujoco)
+    from bridge import GAIN_SCALE, Bridge, Frame, stand  # noqa: E402  (these import numpy and mujoco)
     from world import CAMERA_H, CAMERA_W, DEFAULT_SCENE, FRAME_S, RenderError, SceneError, World  # noqa: E402
 except (ImportError, RuntimeError) as e:  # RuntimeError: mujoco rejects MUJOCO_GL
     print(f"mujoco peer: error: {sys.executable} cannot import MuJoCo: {e}", file=sys.stderr)
     sys.exit(UNAVAILABLE)
 
 PUSH_S = 0.1  # a --push lasts 100 ms
+# IMAGE: the protocol header and the picture's size, then the RGB bytes (sent without a copy)
+IMAGE_HEAD = struct.Struct(rp.HEADER.format + "HH")
+IMAGE_SIZE = 4 + CAMERA_W * CAMERA_H * 3
+
+
+def send_parts(sock, parts):
+    """sendall for a list of buffers (sendmsg may take only part of them)."""
+    parts = [memoryview(p) for p in parts]
+    while parts:
+        sent = sock.sendmsg(parts)
+        while parts and sent >= len(parts[0]):
+            sent -= len(parts[0])
+            parts.pop(0)
+        if parts:
+            parts[0] = parts[0][sent:]
 
 
 class Link:
@@ -89,7 +104,10 @@ class Link:
             except (EOFError, ConnectionResetError):
                 break
             if kind == rp.FRAME:
-                return rp.parse_frame(n, payload)
+                try:
+                    return Frame(n, payload)
+                except ValueError as e:
+                    raise ProtocolError(f"robot {self.index}: {e}") from None
             if kind == rp.BYE:
                 break
             if kind == rp.ERROR:
@@ -241,27 +259,28 @@ def serve(a, world, links, pushes, state):
             if not link.bridge.started:
                 link.bridge.start(f)
             link.bridge.apply(f)
-        t_ms = live[0][1]["time_ms"]
+        t_ms = live[0][1].time_ms
         pushes.apply(world, t_ms / 1000.0)
         world.step()
         answers = {link.index: (link, f, link.bridge.readings()) for link, f in live}  # fixed order: seeded noise
-        due = [link.index for link, f in live if link.camera and f["camera_due"]]
+        due = [link.index for link, f in live if link.camera and f.camera_due]
         for k, (link, f, readings) in answers.items():
             if k not in due:
-                link.peer.send(rp.READINGS, f["frame"], rp.readings_payload(*readings))
+                link.peer.send(rp.READINGS, f.frame, readings)
 
         def deliver(k, rgb):  # on a camera thread; a link is answered by one thread only
             link, f, readings = answers[k]
-            link.peer.send(rp.IMAGE, f["frame"], struct.pack("<HH", CAMERA_W, CAMERA_H) + rgb.tobytes())
-            link.peer.send(rp.READINGS, f["frame"], rp.readings_payload(*readings))
+            send_parts(link.peer.sock, [IMAGE_HEAD.pack(rp.MAGIC, rp.VERSION, rp.IMAGE, IMAGE_SIZE, f.frame, CAMERA_W, CAMERA_H),
+                                        memoryview(rgb).cast("B")])
+            link.peer.send(rp.READINGS, f.frame, readings)
 
         if due:
             world.render(due, deliver)
         if state:
-            state.write(state_line(world, live[0][1]["frame"], t_ms) + "\n")
+            state.write(state_line(world, live[0][1].frame, t_ms) + "\n")
         if a.frames and world.frames >= a.frames:
             for link, f in live:
-                link.peer.send(rp.BYE, f["frame"], struct.pack("<H", 4) + b"done")
+                link.peer.send(rp.BYE, f.frame, struct.pack("<H", 4) + b"done")
             return
 
 

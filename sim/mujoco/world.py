@@ -10,6 +10,7 @@ never itself (MuJoCo would otherwise collide neighbouring leg parts). Robot k's 
 get contype bit k+1 and conaffinity "world and every other robot"; world geoms
 collide with everything. This allows 30 robots (32-bit masks, bit 0 = world).
 """
+import copy
 import math
 import os
 import threading
@@ -17,6 +18,7 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 
 import mujoco
+import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_SCENE = os.path.join(HERE, "scene.xml")
@@ -226,7 +228,8 @@ class World:
         camera threads; deliver(robot, rgb) runs on the thread that rendered it (rgb:
         CAMERA_H x CAMERA_W x 3, rows from the top). Returns when all are delivered."""
         t = time.perf_counter()
-        self.cameras.render(self.d, robots, deliver)
+        self.cameras.update(self.d, robots)
+        self.cameras.render(robots, deliver)
         self.render_s += time.perf_counter() - t
         self.images += len(robots)
 
@@ -253,20 +256,42 @@ def yaw_of(quat):
 
 class Cameras:
     """Offscreen head-camera rendering on a pool of threads, each with its own GL context
-    (MuJoCo releases the GIL while Mesa renders, so software GL uses every core)."""
+    (MuJoCo releases the GIL while Mesa renders, so software GL uses every core).
+
+    `update` (the stepping thread, between physics steps) copies what each due camera
+    sees into that robot's own MjvScene; `render` draws those scenes on the pool, so the
+    drawing never reads MjData. Each scene holds only the geoms whose bounding sphere
+    meets the camera's view: software GL pays per geom drawn, seen or not, so culling
+    the robots behind and beside a camera makes 8 robots cost what 1 does (2.4 -> 0.8 ms
+    per image in a row of 8)."""
+
+    HIDDEN = 5  # a geom group the camera's MjvOption does not show (MuJoCo hides 3-5)
 
     def __init__(self, model, robots, threads=None):
-        self.m, self.robots = model, robots
-        self.threads = threads or min(len(robots), os.cpu_count() or 1)
-        self.local = threading.local()
-        self.scene_lock = threading.Lock()  # mjv_updateScene may use MjData's scratch stack
+        # A private copy: culling rewrites its geom groups, never the stepped model's.
+        self.m = copy.copy(model)
+        self.m.vis.global_.offwidth, self.m.vis.global_.offheight = CAMERA_W, CAMERA_H
+        self.groups = self.m.geom_group.copy()
+        self.rbound = self.m.geom_rbound.copy()
+        self.robots = robots
+        self.cams, self.scenes = [], []
+        for r in robots:
+            cam = mujoco.MjvCamera()
+            cam.type, cam.fixedcamid = mujoco.mjtCamera.mjCAMERA_FIXED, r.camera
+            self.cams.append(cam)
+            self.scenes.append(mujoco.MjvScene(self.m, maxgeom=self.m.ngeom + 100))
         self.vis = mujoco.MjvOption()  # what a camera sees: no rangefinder rays, no sites
         self.vis.flags[mujoco.mjtVisFlag.mjVIS_RANGEFINDER] = 0
         self.vis.sitegroup[:] = 0
+        self.vis.geomgroup[self.HIDDEN] = 0
+        self.rect = mujoco.MjrRect(0, 0, CAMERA_W, CAMERA_H)
+        self.threads = threads or min(len(robots), os.cpu_count() or 1)
+        self.local = threading.local()
         self.pool = ThreadPoolExecutor(self.threads, thread_name_prefix="camera")
         try:  # one GL context per thread, made now: a missing GL fails before any robot attaches
             self._on_each_thread(self._open)
         except Exception as e:
+            self._on_each_thread(self._free)
             self.pool.shutdown()
             raise RenderError(f"cannot render offscreen with MUJOCO_GL={os.environ.get('MUJOCO_GL', '')}: {e}") from None
 
@@ -288,22 +313,54 @@ class Cameras:
             f.result()
 
     def _open(self):
-        self.local.renderer = mujoco.Renderer(self.m, height=CAMERA_H, width=CAMERA_W)
+        from mujoco import gl_context  # after MUJOCO_GL is final
+        t = self.local
+        t.gl = gl_context.GLContext(CAMERA_W, CAMERA_H)
+        t.gl.make_current()  # stays current: this thread draws with no other context
+        t.ctx = mujoco.MjrContext(self.m, mujoco.mjtFontScale.mjFONTSCALE_100)
+        mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, t.ctx)
+        t.raw = np.empty((CAMERA_H, CAMERA_W, 3), np.uint8)  # GL rows: bottom first
+        t.rgb = np.empty_like(t.raw)
 
     def _free(self):
-        r = getattr(self.local, "renderer", None)
-        if r is not None:
-            r.close()  # EGL frees a context only on the thread that made it
-            self.local.renderer = None
+        t = self.local
+        if getattr(t, "ctx", None) is not None:
+            t.ctx.free()  # EGL frees a context only on the thread that made it
+            t.ctx = None
+        if getattr(t, "gl", None) is not None:
+            t.gl.free()
+            t.gl = None
 
-    def _one(self, d, k, deliver):
-        r = self.local.renderer
-        with self.scene_lock:
-            r.update_scene(d, camera=self.robots[k].camera, scene_option=self.vis)
-        deliver(k, r.render())
+    def update(self, d, robots):
+        """Copies the view of each of `robots` (indices) from `d` into its scene."""
+        for k in robots:
+            cam = self.robots[k].camera
+            self.m.geom_group[:] = np.where(self._in_view(d, cam), self.groups, self.HIDDEN)
+            mujoco.mjv_updateScene(self.m, d, self.vis, None, self.cams[k], mujoco.mjtCatBit.mjCAT_ALL, self.scenes[k])
 
-    def render(self, d, robots, deliver):
-        for f in [self.pool.submit(self._one, d, k, deliver) for k in robots]:
+    def _in_view(self, d, cam):
+        """Geoms whose bounding sphere meets the view pyramid of camera `cam` (planes,
+        which have no bound, always)."""
+        v = (d.geom_xpos - d.cam_xpos[cam]) @ d.cam_xmat[cam].reshape(3, 3)  # x right, y up, z back
+        depth = -v[:, 2]
+        ty = math.tan(math.radians(self.m.cam_fovy[cam]) / 2)
+        tx = ty * CAMERA_W / CAMERA_H
+        r = self.rbound
+        return ((r == 0) | ((depth + r > 0)
+                            & (np.abs(v[:, 0]) - tx * depth <= r * math.hypot(1, tx))
+                            & (np.abs(v[:, 1]) - ty * depth <= r * math.hypot(1, ty))))
+
+    def _draw(self, k, deliver):
+        t = self.local
+        mujoco.mjr_render(self.rect, self.scenes[k], t.ctx)
+        mujoco.mjr_readPixels(t.raw, None, self.rect, t.ctx)
+        np.copyto(t.rgb, t.raw[::-1])
+        deliver(k, t.rgb)  # t.rgb is reused once deliver returns
+
+    def render(self, robots, deliver):
+        """Draws the scenes of `robots` (updated before) on the pool; deliver(k, rgb)
+        runs on the drawing thread."""
+        for f in [self.pool.submit(self._draw, k, deliver) for k in robots]:
             f.result()  # re-raises a rendering or delivery error here
 
     def close(self):
