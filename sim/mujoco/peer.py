@@ -8,10 +8,11 @@ their clocks (lockstep). Every 8 ms frame it
   1. waits for the FRAME of every attached runtime; loads each frame's PID gains into
      its robot's position actuators (bridge.py: gain mapping), its joint targets into
      their controls and its ear states into the ear flaps;
-  2. steps the physics of the whole world by 8 ms (4 steps of 2 ms);
-  3. answers each runtime: in frames that take a camera image (30 fps) an IMAGE
-     rendered offscreen from that robot's head camera at 416 x 320, then READINGS:
-     joint angles, accelerometer, paw switches, distance sensors.
+  2. in frames that take a camera image (30 fps), exposes that robot's head camera
+     (416 x 320, offscreen) and sends the IMAGE from a camera thread once drawn;
+  3. steps the physics of the whole world by 8 ms (4 steps of 2 ms) meanwhile;
+  4. answers each runtime with READINGS (after its IMAGE): joint angles,
+     accelerometer, paw switches, distance sensors.
 
 The world (world.py) is a scene (default sim/mujoco/scene.xml: field, goals, ball) with
 the robots in it; robots beyond the attached runtimes stand still in the stand posture.
@@ -44,7 +45,7 @@ import robot_peer as rp  # noqa: E402  (protocol codec: the reference client)
 UNAVAILABLE = 3
 try:
     from bridge import GAIN_SCALE, Bridge, Frame, stand  # noqa: E402  (these import numpy and mujoco)
-    from world import CAMERA_H, CAMERA_W, DEFAULT_SCENE, FRAME_S, RenderError, SceneError, World  # noqa: E402
+    from world import CAMERA_H, CAMERA_W, DEFAULT_SCENE, FRAME_S, RenderError, SceneError, World, wait  # noqa: E402
 except (ImportError, RuntimeError) as e:  # RuntimeError: mujoco rejects MUJOCO_GL
     print(f"mujoco peer: error: {sys.executable} cannot import MuJoCo: {e}", file=sys.stderr)
     sys.exit(UNAVAILABLE)
@@ -175,16 +176,24 @@ class Pushes:
             r.push(f)
 
 
-def state_line(world, frame, t_ms):
-    """Ground truth for --state: every robot's trunk position and orientation, its head
-    camera's position and orientation (MuJoCo camera frame: looks along -z, x right,
-    y up; xmat row-major), the ball."""
+def camera_pose(world, k):
+    """Robot k's head camera: position and orientation (MuJoCo camera frame: looks
+    along -z, x right, y up; xmat row-major)."""
+    cam = world.robots[k].camera
+    return {"pos": _r(world.d.cam_xpos[cam]), "xmat": _r(world.d.cam_xmat[cam])}
+
+
+def state_line(world, frame, t_ms, pictures):
+    """Ground truth for --state at the end of a frame: every robot's trunk position and
+    orientation, its head camera's pose, the ball; for a robot whose camera took a
+    picture in the frame also `picture`, the camera's pose when it was exposed (as
+    the frame began)."""
     robots = []
-    for r in world.robots:
+    for k, r in enumerate(world.robots):
         pos, quat = r.place()
-        cam = r.camera
-        robots.append({"pos": _r(pos), "quat": _r(quat),
-                       "camera": {"pos": _r(world.d.cam_xpos[cam]), "xmat": _r(world.d.cam_xmat[cam])}})
+        robots.append({"pos": _r(pos), "quat": _r(quat), "camera": camera_pose(world, k)})
+        if k in pictures:
+            robots[-1]["picture"] = pictures[k]
     line = {"frame": frame, "time_ms": t_ms, "robots": robots}
     ball = world.ball()
     if ball is not None:
@@ -258,26 +267,36 @@ def serve(a, world, links, pushes, state):
         for link, f in live:
             if not link.bridge.started:
                 link.bridge.start(f)
+        # Pictures are exposed as the frame begins and developed on the camera threads
+        # while the physics steps; each goes out the moment it is drawn, ahead of the
+        # READINGS of its frame (which wait for it), so drawing, stepping and the
+        # runtime's reading of the picture overlap.
+        due = {link.index: f for link, f in live if link.camera and f.camera_due}
+        pictures, poses = [], {}
+        if due:
+
+            def deliver(k, rgb):  # on a camera thread
+                send_parts(links[k].peer.sock, [IMAGE_HEAD.pack(rp.MAGIC, rp.VERSION, rp.IMAGE, IMAGE_SIZE, due[k].frame, CAMERA_W, CAMERA_H),
+                                                memoryview(rgb).cast("B")])
+
+            pictures = world.expose(list(due), deliver)
+            if state:
+                poses = {k: camera_pose(world, k) for k in due}
+        for link, f in live:
             link.bridge.apply(f)
         t_ms = live[0][1].time_ms
         pushes.apply(world, t_ms / 1000.0)
         world.step()
-        answers = {link.index: (link, f, link.bridge.readings()) for link, f in live}  # fixed order: seeded noise
-        due = [link.index for link, f in live if link.camera and f.camera_due]
-        for k, (link, f, readings) in answers.items():
-            if k not in due:
+        answers = [(link, f, link.bridge.readings()) for link, f in live]  # fixed order: seeded noise
+        for link, f, readings in answers:
+            if link.index not in due:
                 link.peer.send(rp.READINGS, f.frame, readings)
-
-        def deliver(k, rgb):  # on a camera thread; a link is answered by one thread only
-            link, f, readings = answers[k]
-            send_parts(link.peer.sock, [IMAGE_HEAD.pack(rp.MAGIC, rp.VERSION, rp.IMAGE, IMAGE_SIZE, f.frame, CAMERA_W, CAMERA_H),
-                                        memoryview(rgb).cast("B")])
-            link.peer.send(rp.READINGS, f.frame, readings)
-
-        if due:
-            world.render(due, deliver)
+        wait(pictures)
+        for link, f, readings in answers:
+            if link.index in due:
+                link.peer.send(rp.READINGS, f.frame, readings)
         if state:
-            state.write(state_line(world, live[0][1].frame, t_ms) + "\n")
+            state.write(state_line(world, live[0][1].frame, t_ms, poses) + "\n")
         if a.frames and world.frames >= a.frames:
             for link, f in live:
                 link.peer.send(rp.BYE, f.frame, struct.pack("<H", 4) + b"done")

@@ -199,7 +199,7 @@ class World:
             self.ball_q = self.m.jnt_qposadr[self.m.joint("ball").id]
         except KeyError:
             pass
-        self.physics_s = self.render_s = 0.0
+        self.physics_s = 0.0
         self.frames = self.images = 0
 
     def close(self):
@@ -223,15 +223,18 @@ class World:
         self.physics_s += time.perf_counter() - t
         self.frames += 1
 
-    def render(self, robots, deliver):
-        """Render the head cameras of `robots` (indices) from the current state on the
-        camera threads; deliver(robot, rgb) runs on the thread that rendered it (rgb:
-        CAMERA_H x CAMERA_W x 3, rows from the top). Returns when all are delivered."""
-        t = time.perf_counter()
+    def expose(self, robots, deliver):
+        """Takes the pictures of the head cameras of `robots` (indices) in the current
+        state and develops them on the camera threads while the caller goes on (and may
+        step): deliver(robot, rgb) runs on the thread that drew it (rgb: CAMERA_H x
+        CAMERA_W x 3, rows from the top). Returns the futures; wait() on them."""
         self.cameras.update(self.d, robots)
-        self.cameras.render(robots, deliver)
-        self.render_s += time.perf_counter() - t
         self.images += len(robots)
+        return self.cameras.submit(robots, deliver)
+
+    def render(self, robots, deliver):
+        """expose() and wait until every picture is delivered."""
+        wait(self.expose(robots, deliver))
 
     def report(self, wall_s=None):
         sim_s = self.frames * FRAME_S
@@ -241,12 +244,17 @@ class World:
         line = (f"mujoco peer: {self.frames} frames = {sim_s:.2f} s simulated, {len(self.robots)} robot(s); "
                 f"physics {self.physics_s:.2f} s wall -> real-time factor {rtf:.1f}")
         if self.images:
-            line += (f"; camera {self.images} images ({self.cameras.describe()}) in {self.render_s:.2f} s -> "
-                     f"{self.images / self.render_s:.0f} fps, "
-                     f"physics+camera real-time factor {sim_s / (self.physics_s + self.render_s):.1f}")
+            draw_s = self.cameras.draw_s
+            line += (f"; camera {self.images} images ({self.cameras.describe()}) drawn in {draw_s:.2f} s -> "
+                     f"{self.images / draw_s:.0f} per second of a thread")
         if wall_s:
             line += f"; whole run {wall_s:.2f} s wall -> {sim_s / wall_s:.2f} x real time"
         return line
+
+
+def wait(futures):
+    for f in futures:
+        f.result()  # re-raises a rendering or delivery error here
 
 
 def yaw_of(quat):
@@ -287,6 +295,7 @@ class Cameras:
         self.rect = mujoco.MjrRect(0, 0, CAMERA_W, CAMERA_H)
         self.threads = threads or min(len(robots), os.cpu_count() or 1)
         self.local = threading.local()
+        self.stats_lock, self.draw_s = threading.Lock(), 0.0
         self.pool = ThreadPoolExecutor(self.threads, thread_name_prefix="camera")
         try:  # one GL context per thread, made now: a missing GL fails before any robot attaches
             self._on_each_thread(self._open)
@@ -352,16 +361,18 @@ class Cameras:
 
     def _draw(self, k, deliver):
         t = self.local
+        start = time.perf_counter()
         mujoco.mjr_render(self.rect, self.scenes[k], t.ctx)
         mujoco.mjr_readPixels(t.raw, None, self.rect, t.ctx)
         np.copyto(t.rgb, t.raw[::-1])
+        with self.stats_lock:
+            self.draw_s += time.perf_counter() - start
         deliver(k, t.rgb)  # t.rgb is reused once deliver returns
 
-    def render(self, robots, deliver):
+    def submit(self, robots, deliver):
         """Draws the scenes of `robots` (updated before) on the pool; deliver(k, rgb)
-        runs on the drawing thread."""
-        for f in [self.pool.submit(self._draw, k, deliver) for k in robots]:
-            f.result()  # re-raises a rendering or delivery error here
+        runs on the drawing thread. Returns the futures."""
+        return [self.pool.submit(self._draw, k, deliver) for k in robots]
 
     def close(self):
         self._on_each_thread(self._free)

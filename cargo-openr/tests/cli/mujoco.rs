@@ -191,7 +191,7 @@ fn a_ball_in_front_of_the_camera_shows_up_where_geometry_says() {
     // Project the ball's centre with the camera pose (MuJoCo camera: looks along -z, x
     // right, y up) and the ERS-7's 45.2° vertical field of view, onto layer H (208 × 160).
     let f = |v: &Value| v.as_f64().unwrap();
-    let cam = &s["robots"][0]["camera"];
+    let cam = &s["robots"][0]["picture"]; // the camera when the picture was exposed
     let (p, m): (Vec<f64>, Vec<f64>) = (cam["pos"].as_array().unwrap().iter().map(f).collect(), cam["xmat"].as_array().unwrap().iter().map(f).collect());
     let ball: Vec<f64> = s["ball"].as_array().unwrap().iter().map(f).collect();
     let d: Vec<f64> = (0..3).map(|i| ball[i] - p[i]).collect();
