@@ -129,6 +129,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         diag: opts.diag,
         shutdown_requested: AtomicBool::new(false),
         booting: AtomicBool::new(true),
+        idle: Default::default(),
         timers: Timers::new(),
         vr: crate::vr::VrService::new(robot, trace, crate::audio::Speaker::new(opts.speaker_wav.clone()), crate::audio::Mic::new(mic_pcm)),
         vectors: Mutex::new(Vec::new()),
@@ -170,6 +171,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         let _ = rt.send(slot.oid, SEL_START, module.reason_message(OREASON_BOOT));
     }
     rt.booting.store(false, std::sync::atomic::Ordering::Release);
+    rt.idle.notify();
     rt.diag.info("all objects started");
 
     let ended = wait_for_end(rt, &signals, opts.run_for);

@@ -171,6 +171,7 @@ extern "C" fn object_exit(status: i32) {
     if let (Some(rt), Some(me)) = (rt(), object::current()) {
         rt.diag.warn(&format!("object `{}` called exit({status}): it stops running, as on the robot", me.name()));
         me.stopped.store(true, Ordering::Release);
+        rt.idle.notify();
         // Answer a pending call so the caller (e.g. the boot sequence) is not left waiting.
         object::reply_current(&[]);
         loop {
@@ -329,6 +330,7 @@ extern "C" fn sleep_ns(ns: u64) {
     let me = object::current();
     if let Some(s) = &me {
         s.sleeping.store(true, Ordering::Release);
+        rt.idle.notify();
     }
     rt.clock.sleep(Duration::from_nanos(ns));
     if let Some(s) = &me {

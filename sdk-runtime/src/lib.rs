@@ -22,6 +22,7 @@ mod crash;
 pub mod design;
 pub mod error;
 pub mod host_api;
+pub mod idle;
 mod interpose;
 pub mod loader;
 pub mod ms;

@@ -103,6 +103,10 @@ pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(
         // A call whose entry returned without Reply/Return gets an empty answer, so the
         // caller is never left waiting forever.
         reply_current(&[]);
-        slot.pending.fetch_sub(1, Ordering::AcqRel);
+        if slot.pending.fetch_sub(1, Ordering::AcqRel) == 1 {
+            if let Some(rt) = crate::runtime::Runtime::get() {
+                rt.idle.notify();
+            }
+        }
     }
 }

@@ -65,6 +65,8 @@ pub struct Runtime {
     /// True until every Start has been sent: at `--speed max` virtual time waits for the
     /// boot sequence too (unless an object sleeps in it), so runs are reproducible.
     pub booting: AtomicBool,
+    /// Signalled when an object may have become idle (see `quiescent`).
+    pub idle: crate::idle::IdleWait,
 }
 
 static RUNTIME: OnceLock<Runtime> = OnceLock::new();

@@ -12,7 +12,7 @@ use std::collections::HashMap;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::sync::Mutex;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use crate::clock::{Speed, FRAME};
 use crate::robot::{self, vectors, VirtualRobot};
@@ -264,15 +264,7 @@ pub fn run_frames(rt: &'static Runtime) -> ! {
     }
 }
 
-/// Waits (briefly polling) until no object has anything queued or running.
+/// Waits until no object has anything queued or running.
 fn wait_until_idle(rt: &Runtime) {
-    let mut spins = 0u32;
-    while !rt.quiescent() {
-        spins += 1;
-        if spins < 64 {
-            std::thread::yield_now();
-        } else {
-            std::thread::sleep(Duration::from_micros(20));
-        }
-    }
+    rt.idle.wait_until(|| rt.quiescent());
 }
