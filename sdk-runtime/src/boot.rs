@@ -43,6 +43,8 @@ pub struct RunOptions {
     pub mic_wav: Option<PathBuf>,
     /// Camera frames from an image file or a directory of frames instead of the scene.
     pub images: Option<PathBuf>,
+    /// Shift of the camera's image timing from boot, ms (0: the first image at 33 ms).
+    pub camera_phase_ms: u64,
     /// Unix socket for pause / step / resume / speed commands.
     pub control: Option<PathBuf>,
     /// External robot peers: where they attach, whether to wait for one
@@ -100,6 +102,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         Some(p) => crate::audio::read_wav_as_mic(p)?,
         None => Vec::new(),
     };
+    robot.set_camera_phase(opts.camera_phase_ms);
     if let Some(p) = &opts.images {
         robot.set_image_source(Some(p)).map_err(|e| Error::config(p, None, format!("cannot use as camera images: {e}")))?;
     }

@@ -65,6 +65,9 @@ pub struct Args {
     /// Camera images from this PPM/BMP file, or the frames of this directory (in name order), instead of the rendered scene
     #[arg(long, value_name = "FILE|DIR")]
     images: Option<PathBuf>,
+    /// Shift the camera's 30 fps image timing by MS milliseconds from boot: robots started at different moments take their pictures in different frames (with --sim, robot k adds (k mod 4) x 8 ms)
+    #[arg(long, value_name = "MS", default_value_t = 0, value_parser = clap::value_parser!(u64).range(0..1000))]
+    camera_phase: u64,
     /// Write the virtual robot's trace (JSON lines: commands, sensor frames, LEDs) to FILE
     #[arg(long, value_name = "FILE")]
     trace: Option<PathBuf>,
@@ -143,6 +146,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         speaker_wav: args.speaker_wav.clone(),
         mic_wav: args.mic_wav.clone(),
         images: args.images.clone(),
+        camera_phase_ms: args.camera_phase,
         control: args.control.clone(),
         peers: sdk_runtime::peer::PeerOptions { socket: args.robot_socket.clone(), tcp: args.robot_tcp, wait: args.robot_wait },
         ms_dir: ms_dir.clone(),
@@ -229,6 +233,10 @@ fn simulate(args: &Args, world: &[Robot], root: &Path, shell: &mut Shell) -> any
         opt("--speed", args.speed.clone().map(Into::into));
         opt("--trace", args.trace.as_ref().map(|t| per_robot(t, k).into()));
         opt("--images", args.images.clone().map(Into::into));
+        // Cameras of neighbouring robots a frame apart: the simulator draws a quarter of
+        // them per frame, alongside the physics step, instead of all every fourth frame.
+        let phase = (args.camera_phase + (k as u64 % 4) * 8) % 1000;
+        opt("--camera-phase", (phase != 0).then(|| phase.to_string().into()));
         // The world's pause button and the sound files belong to robot 0: pausing one
         // runtime holds the lockstep of all.
         if k == 0 {

@@ -51,3 +51,29 @@ fn an_unreadable_image_source_is_a_clear_error() {
     assert_ne!(out.code, Some(0));
     assert!(out.stderr.contains("x.ppm: cannot use as camera images"), "{}", out.stderr);
 }
+
+/// Frame numbers of the images imagesave saved (its "saved /MS/IMGn.BMP frame N" lines).
+fn saved_frames(p: &crate::support::Built, args: &[&str]) -> Vec<u64> {
+    let out = run_ms(&p.ms(), args);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let frames: Vec<u64> = out.lines_starting("ImageSave : saved ").iter().map(|l| l.rsplit(' ').next().unwrap().parse().unwrap()).collect();
+    assert!(frames.len() >= 2, "{}", out.stdout);
+    frames
+}
+
+#[test]
+fn a_camera_phase_moves_the_pictures_to_other_frames() {
+    let p = build("imagesave");
+    let base = saved_frames(&p, &["--for", "3s", "--speed", "max"]);
+    // 8 ms later in the camera's period: each picture one frame earlier.
+    let shifted = saved_frames(&p, &["--for", "3s", "--speed", "max", "--camera-phase", "8"]);
+    assert_eq!(shifted, base.iter().map(|f| f - 1).collect::<Vec<_>>(), "phase 0: {base:?}");
+}
+
+#[test]
+fn a_camera_phase_of_a_second_or_more_is_refused() {
+    let p = build("hello");
+    let out = run_ms(&p.ms(), &["--for", "1s", "--camera-phase", "1000"]);
+    assert_eq!(out.code, Some(2), "{}", out.stderr);
+    assert!(out.stderr.contains("--camera-phase") && out.stderr.contains("0..1000"), "{}", out.stderr);
+}

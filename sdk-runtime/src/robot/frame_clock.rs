@@ -62,12 +62,21 @@ pub struct FrameClock {
     frame: u32,
     sensor_first: u32,
     fps: u64,
+    /// Where in its period the camera's image timing starts (ms after boot).
+    camera_phase_ms: u64,
     mic_period: u64,
 }
 
 impl FrameClock {
     pub fn new(design: Design) -> FrameClock {
-        FrameClock { count: 0, frame: 0, sensor_first: 1, fps: design.camera_fps() as u64, mic_period: design.mic_period_frames() as u64 }
+        FrameClock { count: 0, frame: 0, sensor_first: 1, fps: design.camera_fps() as u64, camera_phase_ms: 0, mic_period: design.mic_period_frames() as u64 }
+    }
+
+    /// Shifts the camera's image timing by `ms`: robots that booted at different moments
+    /// take their pictures in different frames (a simulator of several robots then
+    /// renders a few cameras per frame instead of all of them every fourth frame).
+    pub fn set_camera_phase(&mut self, ms: u64) {
+        self.camera_phase_ms = ms;
     }
 
     /// Starts counting at `first` instead of 1 (tests of the wrap). `first` is aligned
@@ -112,7 +121,7 @@ impl FrameClock {
         } else {
             None
         };
-        let images = |k: u64| k * FRAME_MS * self.fps / 1000;
+        let images = |k: u64| (k * FRAME_MS + self.camera_phase_ms) * self.fps / 1000;
         let camera = images(n) > images(n - 1);
         let mic = n % self.mic_period == 0;
         Tick { frame: self.frame, count: n, time_ms: n * FRAME_MS, sensor_vector, camera, mic }
@@ -160,6 +169,20 @@ mod tests {
         let mut c = FrameClock::new(Design::Ers7);
         let v: Vec<u32> = (0..8).filter_map(|_| c.tick().sensor_vector).collect();
         assert_eq!(v, vec![1, 5]);
+    }
+
+    #[test]
+    fn a_camera_phase_moves_the_image_frames_and_keeps_the_rate() {
+        let due = |phase| {
+            let mut c = FrameClock::new(Design::Ers7);
+            c.set_camera_phase(phase);
+            (0..125).filter_map(|_| Some(c.tick()).filter(|t| t.camera).map(|t| t.count)).collect::<Vec<_>>()
+        };
+        let (a, b) = (due(0), due(8));
+        assert_eq!((a.len(), b.len()), (30, 30));
+        // 8 ms later in the period = one frame earlier (the images of 0 ms come at 5, 9, 13, ...).
+        assert_eq!(&a[..3], &[5, 9, 13]);
+        assert_eq!(&b[..3], &[4, 8, 12]);
     }
 
     #[test]

@@ -151,6 +151,12 @@ impl PendingFrame {
 }
 
 impl VirtualRobot {
+    /// Shifts the camera's 30 fps image timing by `ms` from boot (see
+    /// [`FrameClock::set_camera_phase`]).
+    pub fn set_camera_phase(&mut self, ms: u64) {
+        self.clock.set_camera_phase(ms);
+    }
+
     /// A robot of `design` in its boot state (sleep posture, gains disabled, motor
     /// power off, frame counter before frame 1).
     pub fn new(design: Design) -> VirtualRobot {
