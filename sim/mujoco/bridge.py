@@ -122,7 +122,15 @@ class Bridge:
         # readings: joint IDs and their qpos addresses, in a fixed order
         self.joint_ids = np.array(list(self.joints), np.uint32)
         self.joint_q = np.array([robot.act[n][1] for n in self.joints.values()], np.intp)
+        # sensors: IDs in READINGS order, their sensordata addresses (accel x y z first)
+        self.sensor_ids = [a[0] for a in self.accel] + [p[0] for p in self.paws] + [p[0] for p in self.psds]
+        self.sensor_adr = np.array([robot.sensor["accel"] + k for k in range(3)]
+                                   + [robot.sensor[name] for _, name in self.paws]
+                                   + [robot.sensor[p[1]] for p in self.psds], np.intp)
+        # MuJoCo arrays looked up once (each attribute access makes a new numpy view)
+        self.qpos, self.ctrl, self.sensordata = robot.d.qpos, robot.d.ctrl, robot.d.sensordata
         self.layout = None  # (joint IDs of the frames, their rows we drive, actuators, tau/range)
+        self.gains = None  # the last frame's raw gains and motor power, as applied
         self.started = False
 
     def start(self, frame):
@@ -147,14 +155,17 @@ class Bridge:
         r, power = self.robot, frame.motor_power
         rows, act, tau_per_rad = self._rows(frame.joints["id"])
         j = frame.joints[rows]
-        driven = (j["enabled"] != 0) & (j["p"] > 0) & power
-        # robot.servo's mapping, for all joints at once
-        kp = np.where(driven, self.gain_scale * j["p"] / 4 * tau_per_rad, 0.0)
-        kv = np.where(driven, self.gain_scale * j["d"] / 2 * FRAME_S * tau_per_rad, 0.0)
-        r.m.actuator_gainprm[act, 0] = kp
-        r.m.actuator_biasprm[act, 1] = -kp
-        r.m.actuator_biasprm[act, 2] = -kv
-        r.d.ctrl[act] = j["target"] * 1e-6
+        gains = (j["p"].tobytes(), j["d"].tobytes(), j["enabled"].tobytes(), power)
+        if gains != self.gains:  # programs load gains once in a while, not every frame
+            self.gains = gains
+            driven = (j["enabled"] != 0) & (j["p"] > 0) & power
+            # robot.servo's mapping, for all joints at once
+            kp = np.where(driven, self.gain_scale * j["p"] / 4 * tau_per_rad, 0.0)
+            kv = np.where(driven, self.gain_scale * j["d"] / 2 * FRAME_S * tau_per_rad, 0.0)
+            r.m.actuator_gainprm[act, 0] = kp
+            r.m.actuator_biasprm[act, 1] = -kp
+            r.m.actuator_biasprm[act, 2] = -kv
+        self.ctrl[act] = j["target"] * 1e-6
         for pid, state in frame.ears.tolist():
             num = self.ears.get(pid)
             if num is not None:
@@ -163,17 +174,15 @@ class Bridge:
 
     def readings(self):
         """The READINGS payload of the current state: joint angles, then sensors."""
-        r = self.robot
-        angles = np.rint(r.d.qpos[self.joint_q] * 1e6)
-        acc = r.accel() + self.rng.normal(0.0, ACCEL_SIGMA, 3)
-        sensors = [(pid, int(max(-ACCEL_MAX, min(ACCEL_MAX, round(sign * acc[axis] * 1e6)))))
-                   for pid, axis, sign in self.accel]
-        sensors += [(pid, int(r.value(name) > PAW_THRESHOLD_N)) for pid, name in self.paws]
+        angles = np.rint(self.qpos[self.joint_q] * 1e6)
+        values = self.sensordata[self.sensor_adr].tolist()  # accel x y z, paws, PSDs
+        acc = [v + n for v, n in zip(values, self.rng.normal(0.0, ACCEL_SIGMA, 3).tolist())]
+        sensors = [max(-ACCEL_MAX, min(ACCEL_MAX, round(sign * acc[axis] * 1e6))) for _, axis, sign in self.accel]
+        at = 3
+        sensors += [int(v > PAW_THRESHOLD_N) for v in values[at:at + len(self.paws)]]
+        at += len(self.paws)
         if self.psds:
-            noise = self.rng.normal(0.0, PSD_SIGMA, len(self.psds))
-            for (pid, name, lo, hi), n in zip(self.psds, noise):
-                dist = r.value(name)
-                um = hi if dist < 0 else min(hi, max(lo, round((dist + n) * 1e6)))  # -1: nothing hit
-                sensors.append((pid, int(um)))
-        return (readings_payload(self.joint_ids, angles)
-                + readings_payload([s[0] for s in sensors], [s[1] for s in sensors]))
+            noise = self.rng.normal(0.0, PSD_SIGMA, len(self.psds)).tolist()
+            for (_, _, lo, hi), dist, n in zip(self.psds, values[at:], noise):
+                sensors.append(hi if dist < 0 else min(hi, max(lo, round((dist + n) * 1e6))))  # -1: nothing hit
+        return readings_payload(self.joint_ids, angles) + readings_payload(self.sensor_ids, sensors)
