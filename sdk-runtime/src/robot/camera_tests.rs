@@ -473,3 +473,243 @@ fn camera_parameters_change_the_image() {
     assert_eq!(r.camera_control(pan, CAM_SET_GAIN, 1), O_INVALID_ARG);
     assert_eq!(r.camera_control(0xDEAD, CAM_SET_GAIN, 1), O_INVALID_PRIMITIVE_ID);
 }
+
+// ---------------------------------------------------------------------------------
+// layer synthesis pinned against a straightforward reference
+
+/// The per-pixel synthesis as first written (before it was optimised), kept as the
+/// reference `synthesize` must match byte for byte. CDT bits follow the robot-api 6.7
+/// rule directly from the loaded tables (not through `CdtLut`'s lookup tables).
+mod reference {
+    use crate::robot::camera::{CdtLut, CDT_CHANNELS};
+    use crate::robot::image::{ImageLayout, LayerLayout, TAG_SIZE};
+
+    const KY: [i32; 3] = [19_661, 38_550, 7_325];
+
+    fn luma(r: i32, g: i32, b: i32) -> i32 {
+        (KY[0] * r + KY[1] * g + KY[2] * b + 32_768) >> 16
+    }
+
+    fn div_round(n: i32, d: i32) -> i32 {
+        (2 * n + d).div_euclid(2 * d)
+    }
+
+    fn clip(v: i32) -> u8 {
+        v.clamp(0, 255) as u8
+    }
+
+    fn from_rgb(l: &LayerLayout, rgb: &[u8], dst: &mut [u8]) {
+        let (w, h) = (l.width, l.height);
+        let sw = 2 * w;
+        let stride = l.row_stride();
+        for y in 0..h {
+            let row = &mut dst[y * stride..(y + 1) * stride];
+            let px = |sx: usize, sy: usize| {
+                let o = (sy * sw + sx) * 3;
+                (rgb[o] as i32, rgb[o + 1] as i32, rgb[o + 2] as i32)
+            };
+            for x in 0..w {
+                let (r0, g0, b0) = px(2 * x, 2 * y);
+                let (r1, g1, b1) = px(2 * x + 1, 2 * y);
+                let (r2, g2, b2) = px(2 * x, 2 * y + 1);
+                let (r3, g3, b3) = px(2 * x + 1, 2 * y + 1);
+                let (a, b, c, d) = (luma(r0, g0, b0), luma(r1, g1, b1), luma(r2, g2, b2), luma(r3, g3, b3));
+                let sy = a + b + c + d;
+                row[x] = clip(div_round(sy, 4));
+                row[w + x] = clip(128 + div_round(128 * (r0 + r1 + r2 + r3 - sy), 1020));
+                row[2 * w + x] = clip(128 + div_round(128 * (b0 + b1 + b2 + b3 - sy), 1020));
+                row[3 * w + x] = clip(128 + div_round(c + d - a - b, 4));
+                row[4 * w + x] = clip(128 + div_round(b + d - a - c, 4));
+                row[5 * w + x] = clip(128 + div_round(a + d - b - c, 4));
+            }
+        }
+    }
+
+    fn from_layer(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8]) {
+        let (w, ss, sw, stride) = (l.width, src.row_stride(), src.width, l.row_stride());
+        for y in 0..l.height {
+            for x in 0..w {
+                let q = |band: usize| {
+                    let i = band * sw + 2 * x;
+                    let (t, b) = (2 * y * ss + i, (2 * y + 1) * ss + i);
+                    (s[t] as i32, s[t + 1] as i32, s[b] as i32, s[b + 1] as i32)
+                };
+                let (a, b, c, d) = q(0);
+                let (cr0, cr1, cr2, cr3) = q(1);
+                let (cb0, cb1, cb2, cb3) = q(2);
+                let row = &mut dst[y * stride..(y + 1) * stride];
+                row[x] = clip(div_round(a + b + c + d, 4));
+                row[w + x] = clip(div_round(cr0 + cr1 + cr2 + cr3, 4));
+                row[2 * w + x] = clip(div_round(cb0 + cb1 + cb2 + cb3, 4));
+                row[3 * w + x] = clip(128 + div_round(c + d - a - b, 4));
+                row[4 * w + x] = clip(128 + div_round(b + d - a - c, 4));
+                row[5 * w + x] = clip(128 + div_round(a + d - b - c, 4));
+            }
+        }
+    }
+
+    fn classify(lut: &CdtLut, y: u8, cr: u8, cb: u8) -> u8 {
+        let mut bits = 0;
+        for k in 0..CDT_CHANNELS {
+            if let Some(t) = lut.table(k) {
+                let [cr_min, cr_max, cb_min, cb_max] = t[y as usize >> 3].to_le_bytes();
+                if (cr_min..=cr_max).contains(&cr) && (cb_min..=cb_max).contains(&cb) {
+                    bits |= 1 << k;
+                }
+            }
+        }
+        bits
+    }
+
+    pub fn synthesize(layout: &ImageLayout, rgb: &[u8], lut: &CdtLut, field_counter: u32, buf: &mut [u8]) -> [u32; CDT_CHANNELS] {
+        let [lh, lm, ll, lc] = layout.layers;
+        let (_, rest) = buf.split_at_mut(lh.data_offset);
+        let (h, rest) = rest.split_at_mut(lm.data_offset - lh.data_offset);
+        let (m, rest) = rest.split_at_mut(ll.data_offset - lm.data_offset);
+        let (l, c) = rest.split_at_mut(lc.data_offset - ll.data_offset);
+        from_rgb(&lh, rgb, h);
+        from_layer(&lh, h, &lm, m);
+        from_layer(&lm, m, &ll, l);
+        let mut counts = [0u32; CDT_CHANNELS];
+        for y in 0..lc.height {
+            for x in 0..lc.width {
+                let at = y * lm.row_stride() + x;
+                let bits = classify(lut, m[at], m[at + lm.width], m[at + 2 * lm.width]);
+                c[y * lc.row_stride() + x] = bits;
+                if !(y + 1 == lc.height && x < TAG_SIZE) {
+                    for (k, n) in counts.iter_mut().enumerate() {
+                        *n += (bits >> k) as u32 & 1;
+                    }
+                }
+            }
+        }
+        layout.write_tags(buf, field_counter, counts).expect("sized");
+        counts
+    }
+}
+
+/// A deterministic pseudo-random byte stream.
+fn lcg_bytes(seed: u32, n: usize) -> Vec<u8> {
+    let mut s = seed;
+    (0..n)
+        .map(|_| {
+            s = s.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+            (s >> 16) as u8
+        })
+        .collect()
+}
+
+/// Tables exercising several channels and per-segment ranges.
+fn test_lut() -> CdtLut {
+    let mut lut = CdtLut::default();
+    let green = [cdt_entry(110, 0, 127, 0); 32];
+    let mut stairs = [0u32; 32];
+    for (s, e) in stairs.iter_mut().enumerate() {
+        let v = (s * 8) as u8;
+        *e = cdt_entry(v.saturating_add(60), v / 2, 255 - v / 3, v / 4);
+    }
+    let everything = [cdt_entry(255, 0, 255, 0); 32];
+    let empty = [cdt_entry(0, 255, 0, 255); 32]; // min > max: matches nothing
+    for (channel, entries) in [(0, pink_table()), (5, green), (2, stairs), (6, everything), (3, empty)] {
+        lut.load(&CdtTable { channel, entries });
+    }
+    lut
+}
+
+/// Sensor-size test images: random, extremes, gradients, saturated checkerboards.
+fn test_images(w: usize, h: usize) -> Vec<(&'static str, Vec<u8>)> {
+    let img = |f: &dyn Fn(usize, usize, usize) -> u8| {
+        let mut v = Vec::with_capacity(w * h * 3);
+        for y in 0..h {
+            for x in 0..w {
+                v.extend((0..3).map(|c| f(x, y, c)));
+            }
+        }
+        v
+    };
+    let noise = lcg_bytes(99, w * h * 3);
+    let sat = [[255, 0, 0], [0, 255, 0], [0, 0, 255], [255, 255, 0], [255, 0, 255], [0, 255, 255], [0, 0, 0], [255, 255, 255]];
+    vec![
+        ("random", lcg_bytes(7, w * h * 3)),
+        ("random 0/255", noise.iter().map(|&v| if v & 1 == 0 { 0 } else { 255 }).collect()),
+        ("black", vec![0; w * h * 3]),
+        ("white", vec![255; w * h * 3]),
+        ("grey 128", vec![128; w * h * 3]),
+        ("horizontal gradient", img(&|x, _, c| ((x * 255 / (w - 1)) as u8).wrapping_add(c as u8 * 85))),
+        ("vertical gradient", img(&|_, y, c| ((y * 255 / (h - 1)) as u8) ^ (c as u8 * 0x55))),
+        ("diagonal gradient", img(&|x, y, c| ((x + y + 40 * c) % 256) as u8)),
+        ("saturated pixels", img(&|x, y, c| sat[(x * 3 + y * 5) % 8][c])),
+        ("saturated blocks", img(&|x, y, c| sat[(x / 9 + y / 7) % 8][c])),
+        // extreme high-pass values, both signs (the upper clip of LH, HL, HH)
+        ("pixel checkerboard", img(&|x, y, _| if (x + y) % 2 == 0 { 0 } else { 255 })),
+        ("pixel checkerboard'", img(&|x, y, _| if (x + y) % 2 == 0 { 255 } else { 0 })),
+        ("row stripes", img(&|_, y, c| if y % 2 == 0 { 255 } else { [0, 30, 0][c] })),
+        ("row stripes'", img(&|_, y, _| if y % 2 == 0 { 0 } else { 255 })),
+        ("column stripes", img(&|x, _, c| if x % 2 == 0 { [255, 0, 255][c] } else { 0 })),
+        ("column stripes'", img(&|x, _, _| if x % 2 == 0 { 0 } else { 255 })),
+    ]
+}
+
+#[test]
+fn synthesize_matches_reference_byte_for_byte() {
+    let lut = test_lut();
+    for design in [Design::Ers7, Design::Ers210] {
+        let layout = ImageLayout::new(design);
+        let (w, h) = (2 * layout.layers[0].width, 2 * layout.layers[0].height);
+        let mut any_counts = [0u32; CDT_CHANNELS];
+        let mut clipped = [false; 3]; // LH, HL, HH of layer H reached 255
+        for (i, (name, rgb)) in test_images(w, h).into_iter().enumerate() {
+            // both start from the same garbage, so bytes either leaves alone compare too
+            let garbage = lcg_bytes(1000 + i as u32, layout.size());
+            let (mut want, mut got) = (garbage.clone(), garbage);
+            let fc = 3 + i as u32;
+            let want_counts = reference::synthesize(&layout, &rgb, &lut, fc, &mut want);
+            let got_counts = synthesize(&layout, &rgb, &lut, fc, &mut got);
+            assert_eq!(got_counts, want_counts, "{design:?} {name}: counts");
+            if let Some(at) = got.iter().zip(&want).position(|(g, w)| g != w) {
+                let layer = layout.layers.iter().rposition(|l| l.data_offset <= at);
+                panic!("{design:?} {name}: byte {at} (layer {layer:?}) is {} instead of {}", got[at], want[at]);
+            }
+            for (a, n) in any_counts.iter_mut().zip(want_counts) {
+                *a += n;
+            }
+            let h = layout.layers[0];
+            for (k, c) in [band::Y_LH, band::Y_HL, band::Y_HH].into_iter().zip(&mut clipped) {
+                *c |= (0..h.height - 1).any(|y| (0..h.width).any(|x| want[layout.pixel_offset(0, k, x, y).unwrap()] == 255));
+            }
+        }
+        assert_eq!(clipped, [true; 3], "{design:?}: the images reach the upper clip of every high-pass band");
+        // the images reach every loaded channel except the empty one
+        for k in [0, 2, 5, 6] {
+            assert!(any_counts[k] > 0, "{design:?} channel {k}: {any_counts:?}");
+        }
+        assert_eq!(any_counts[3], 0);
+    }
+}
+
+/// Layer synthesis time per image (run in release:
+/// `cargo test --release -p sdk-runtime -- --ignored --nocapture synth_speed`).
+#[test]
+#[ignore = "benchmark"]
+fn synth_speed() {
+    let mut r = standing();
+    let mut out = Vec::new();
+    r.render_image(0, &mut out);
+    let rendered = r.camera_rgb().data.clone();
+    let layout = r.image_layout();
+    let lut = test_lut();
+    for (name, rgb) in [("rendered", rendered), ("random", lcg_bytes(7, 416 * 320 * 3))] {
+        let n = 300;
+        let mut runs: Vec<f64> = (0..9)
+            .map(|_| {
+                let t = Instant::now();
+                for f in 0..n {
+                    std::hint::black_box(synthesize(&layout, std::hint::black_box(&rgb), &lut, f, &mut out));
+                }
+                t.elapsed().as_nanos() as f64 / n as f64
+            })
+            .collect();
+        runs.sort_by(f64::total_cmp);
+        println!("synthesize ({name}): median {:.0} ns per image (min {:.0}, max {:.0})", runs[4], runs[0], runs[8]);
+    }
+}
