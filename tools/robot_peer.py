@@ -24,7 +24,7 @@ HELLO, WELCOME, FRAME, READINGS, IMAGE, MIC, SPEAKER, CLOCK, BYE, ERROR = range(
 ROLE_JOINTS, ROLE_ACCEL, ROLE_SWITCHES, ROLE_PSD, ROLE_CAMERA, ROLE_MIC, ROLE_SPEAKER = (1 << i for i in range(7))
 ROLE_NAMES = ["joints", "accel", "switches", "psd", "camera", "mic", "speaker"]
 FLAG_CLOCK = 1
-FRAME_SENSOR_DUE, FRAME_CAMERA_DUE, FRAME_MIC_DUE, FRAME_READINGS_EXPECTED = 1, 2, 4, 8
+FRAME_SENSOR_DUE, FRAME_CAMERA_DUE, FRAME_MIC_DUE, FRAME_READINGS_EXPECTED, FRAME_CAMERA_NEXT = 1, 2, 4, 8, 16
 CLASS_NAMES = {1: "joint", 2: "ear", 3: "led2", 4: "led3", 5: "accel", 6: "switch", 7: "psd",
                8: "camera", 9: "mic", 10: "speaker", 11: "other"}
 
@@ -98,6 +98,7 @@ def parse_frame(frame, p):
     f["camera_due"] = bool(flags & FRAME_CAMERA_DUE)
     f["mic_due"] = bool(flags & FRAME_MIC_DUE)
     f["readings_expected"] = bool(flags & FRAME_READINGS_EXPECTED)
+    f["camera_next"] = bool(flags & FRAME_CAMERA_NEXT)
     joints = []
     for _ in range(r.get("H")):
         pid, target, measured, gp, gi, gd, enabled, _ = r.get("IiiHHHBB")

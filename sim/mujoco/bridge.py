@@ -66,15 +66,16 @@ JOINT = np.dtype([("id", "<u4"), ("target", "<i4"), ("measured", "<i4"), ("p", "
                   ("d", "<u2"), ("enabled", "u1"), ("reserved", "u1")])
 EAR = np.dtype([("id", "<u4"), ("state", "<u4")])
 LED_SIZE = 8
-FRAME_CAMERA_DUE = 2
+FRAME_CAMERA_DUE, FRAME_CAMERA_NEXT = 2, 16
 READING = np.dtype([("id", "<u4"), ("value", "<i4")])
 COUNT = struct.Struct("<H")
 
 
 class Frame:
-    """One FRAME: number, time, camera due, motor power, joints and ears (numpy records)."""
+    """One FRAME: number, time, camera due (now / next frame), motor power, joints and
+    ears (numpy records)."""
 
-    __slots__ = ("frame", "time_ms", "camera_due", "motor_power", "joints", "ears")
+    __slots__ = ("frame", "time_ms", "camera_due", "camera_next", "motor_power", "joints", "ears")
 
     def __init__(self, frame, payload):
         try:
@@ -88,7 +89,8 @@ class Frame:
             self.ears = np.frombuffer(payload, EAR, ears, at + COUNT.size)
         except (struct.error, ValueError):
             raise ValueError(f"malformed FRAME {frame} ({len(payload)} bytes)") from None
-        self.frame, self.camera_due, self.motor_power = frame, bool(flags & FRAME_CAMERA_DUE), bool(power)
+        self.frame, self.motor_power = frame, bool(power)
+        self.camera_due, self.camera_next = bool(flags & FRAME_CAMERA_DUE), bool(flags & FRAME_CAMERA_NEXT)
 
 
 def readings_payload(ids, values):

@@ -8,11 +8,11 @@ their clocks (lockstep). Every 8 ms frame it
   1. waits for the FRAME of every attached runtime; loads each frame's PID gains into
      its robot's position actuators (bridge.py: gain mapping), its joint targets into
      their controls and its ear states into the ear flaps;
-  2. in frames that take a camera image (30 fps), exposes that robot's head camera
-     (416 x 320, offscreen) and sends the IMAGE from a camera thread once drawn;
-  3. steps the physics of the whole world by 8 ms (4 steps of 2 ms) meanwhile;
-  4. answers each runtime with READINGS (after its IMAGE): joint angles,
-     accelerometer, paw switches, distance sensors.
+  2. steps the physics of the whole world by 8 ms (4 steps of 2 ms);
+  3. answers each runtime with READINGS: joint angles, accelerometer, paw switches,
+     distance sensors -- in frames that take a camera image (30 fps) after the IMAGE
+     of its head camera (416 x 320, offscreen), exposed as the frame began and drawn
+     on a camera thread while the runtime worked on the frame before (serve()).
 
 The world (world.py) is a scene (default sim/mujoco/scene.xml: field, goals, ball) with
 the robots in it; robots beyond the attached runtimes stand still in the stand posture.
@@ -135,6 +135,10 @@ def connect(path=None, tcp=None):
         sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         return sock
     sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    # Room for two whole pictures: a camera thread hands its IMAGE to the kernel and is
+    # free, instead of waiting for the runtime to read it (the kernel caps this at
+    # net.core.wmem_max).
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, 2 * IMAGE_SIZE)
     deadline = time.monotonic() + 60  # the runtime may still be loading its objects
     while True:
         try:
@@ -258,7 +262,14 @@ def run(a):
 
 
 def serve(a, world, links, pushes, state):
-    """The lockstep: one FRAME from every attached runtime, one physics step, answers."""
+    """The lockstep: one FRAME from every attached runtime, one physics step, answers.
+
+    Pictures show the state a camera frame begins with. A FRAME announcing a picture in
+    the next frame (flag camera_next) has it exposed right after this frame's step and
+    drawn on a camera thread while the runtime works; the IMAGE goes out the moment it is
+    drawn, and the READINGS of its frame wait for it. A picture nobody announced (the
+    first frame, an older runtime) is exposed as its frame begins, alongside the step."""
+    ahead, ahead_poses = [], {}  # pictures exposed for the next frame, their camera poses
     while True:
         live = [(link, link.next_frame()) for link in links if link.open]
         live = [(link, f) for link, f in live if f is not None]
@@ -267,21 +278,13 @@ def serve(a, world, links, pushes, state):
         for link, f in live:
             if not link.bridge.started:
                 link.bridge.start(f)
-        # Pictures are exposed as the frame begins and developed on the camera threads
-        # while the physics steps; each goes out the moment it is drawn, ahead of the
-        # READINGS of its frame (which wait for it), so drawing, stepping and the
-        # runtime's reading of the picture overlap.
-        due = {link.index: f for link, f in live if link.camera and f.camera_due}
-        pictures, poses = [], {}
-        if due:
-
-            def deliver(k, rgb):  # on a camera thread
-                send_parts(links[k].peer.sock, [IMAGE_HEAD.pack(rp.MAGIC, rp.VERSION, rp.IMAGE, IMAGE_SIZE, due[k].frame, CAMERA_W, CAMERA_H),
-                                                memoryview(rgb).cast("B")])
-
-            pictures = world.expose(list(due), deliver)
+        due = {link.index for link, f in live if link.camera and f.camera_due}
+        pictures, poses = ahead, ahead_poses
+        late = {link.index: f.frame for link, f in live if link.index in due and link.index not in poses}
+        if late:
+            pictures = pictures + take_pictures(world, links, late)
             if state:
-                poses = {k: camera_pose(world, k) for k in due}
+                poses = {**poses, **{k: camera_pose(world, k) for k in late}}
         for link, f in live:
             link.bridge.apply(f)
         t_ms = live[0][1].time_ms
@@ -301,6 +304,22 @@ def serve(a, world, links, pushes, state):
             for link, f in live:
                 link.peer.send(rp.BYE, f.frame, struct.pack("<H", 4) + b"done")
             return
+        # The state now is the one the next frame begins with.
+        soon = {link.index: (f.frame + 1) & 0xFFFFFFFF for link, f in live if link.camera and f.camera_next}
+        ahead = take_pictures(world, links, soon) if soon else []
+        ahead_poses = {k: camera_pose(world, k) for k in soon} if state else dict.fromkeys(soon)
+
+
+def take_pictures(world, links, frames):
+    """Exposes the cameras of the robots in `frames` (robot -> frame number of the
+    picture) now; each IMAGE is sent from the camera thread that draws it. Returns the
+    futures."""
+
+    def deliver(k, rgb):
+        send_parts(links[k].peer.sock, [IMAGE_HEAD.pack(rp.MAGIC, rp.VERSION, rp.IMAGE, IMAGE_SIZE, frames[k], CAMERA_W, CAMERA_H),
+                                        memoryview(rgb).cast("B")])
+
+    return world.expose(list(frames), deliver)
 
 
 def bench(a):

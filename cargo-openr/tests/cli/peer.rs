@@ -166,6 +166,12 @@ fn lockstep_python_peer_drives_the_clock_and_supplies_the_joint_angles() {
     assert_eq!(numbers, (1..=375).collect::<Vec<u64>>());
     assert!(frames.iter().all(|f| f["readings_expected"] == true));
     assert!(out.stderr.contains("375 frames"), "{}", out.stderr);
+    assert_eq!(welcome["revision"], 1);
+    // 30 pictures a second, each announced by the frame before it (flag bit 4)
+    let due: Vec<u64> = frames.iter().filter(|f| f["camera_due"] == true).map(|f| f["frame"].as_u64().unwrap()).collect();
+    let announced: Vec<u64> = frames.iter().filter(|f| f["camera_next"] == true).map(|f| f["frame"].as_u64().unwrap() + 1).collect();
+    assert_eq!(due.len(), 90, "{due:?}");
+    assert_eq!(announced[..90], due[..], "camera_next must come one frame before camera_due");
     let locator: HashMap<u64, String> = welcome["primitives"]
         .as_array()
         .unwrap()

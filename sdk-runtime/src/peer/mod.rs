@@ -331,6 +331,9 @@ pub fn frame_payload(robot: &VirtualRobot, f: &PendingFrame) -> Vec<u8> {
     if f.mic_due() {
         flags |= FRAME_MIC_DUE;
     }
+    if f.camera_next() {
+        flags |= FRAME_CAMERA_NEXT;
+    }
     let body = robot.body();
     let model = robot.model();
     let mut o = Out::default();

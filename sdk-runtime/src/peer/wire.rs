@@ -7,7 +7,7 @@ pub const MAGIC: [u8; 4] = *b"ORP1";
 /// Protocol version carried in every header; a different one is refused.
 pub const VERSION: u16 = 1;
 /// Compatible additions (fields appended to payloads, new message types) bump this.
-pub const REVISION: u16 = 0;
+pub const REVISION: u16 = 1;
 pub const HEADER_LEN: usize = 16;
 /// Largest payload accepted (a camera picture of the ERS-7 is 399 360 bytes).
 pub const MAX_PAYLOAD: u32 = 4 << 20;
@@ -43,6 +43,7 @@ pub const FRAME_SENSOR_DUE: u8 = 1;
 pub const FRAME_CAMERA_DUE: u8 = 2;
 pub const FRAME_MIC_DUE: u8 = 4;
 pub const FRAME_READINGS_EXPECTED: u8 = 8;
+pub const FRAME_CAMERA_NEXT: u8 = 16;
 
 /// Primitive classes of the WELCOME table.
 pub const CLASS_JOINT: u16 = 1;

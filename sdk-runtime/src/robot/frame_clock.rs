@@ -51,6 +51,8 @@ pub struct Tick {
     pub sensor_vector: Option<u32>,
     /// True when a camera image is taken in this frame.
     pub camera: bool,
+    /// True when one is taken in the next frame (a simulator may start drawing it).
+    pub camera_next: bool,
     /// True when a microphone block completes in this frame.
     pub mic: bool,
 }
@@ -123,8 +125,9 @@ impl FrameClock {
         };
         let images = |k: u64| (k * FRAME_MS + self.camera_phase_ms) * self.fps / 1000;
         let camera = images(n) > images(n - 1);
+        let camera_next = images(n + 1) > images(n);
         let mic = n % self.mic_period == 0;
-        Tick { frame: self.frame, count: n, time_ms: n * FRAME_MS, sensor_vector, camera, mic }
+        Tick { frame: self.frame, count: n, time_ms: n * FRAME_MS, sensor_vector, camera, camera_next, mic }
     }
 }
 
@@ -179,6 +182,11 @@ mod tests {
             (0..125).filter_map(|_| Some(c.tick()).filter(|t| t.camera).map(|t| t.count)).collect::<Vec<_>>()
         };
         let (a, b) = (due(0), due(8));
+        let mut c = FrameClock::new(Design::Ers7);
+        let ticks: Vec<Tick> = (0..125).map(|_| c.tick()).collect();
+        for w in ticks.windows(2) {
+            assert_eq!(w[0].camera_next, w[1].camera, "frame {}", w[0].count);
+        }
         assert_eq!((a.len(), b.len()), (30, 30));
         // 8 ms later in the period = one frame earlier (the images of 0 ms come at 5, 9, 13, ...).
         assert_eq!(&a[..3], &[5, 9, 13]);

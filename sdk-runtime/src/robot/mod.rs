@@ -145,6 +145,10 @@ impl PendingFrame {
     pub fn camera_due(&self) -> bool {
         self.tick.camera
     }
+    /// A camera image is taken in the next frame.
+    pub fn camera_next(&self) -> bool {
+        self.tick.camera_next
+    }
     pub fn mic_due(&self) -> bool {
         self.tick.mic
     }
