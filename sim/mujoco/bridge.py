@@ -26,7 +26,7 @@ import struct
 
 import numpy as np
 
-from world import FRAME_S
+from world import servo_gains
 
 ACCEL_MAX = 19613300  # µm/s², ±2 g (ers7-model 5.4)
 GAIN_SCALE = 4.0  # estimated, see above
@@ -161,9 +161,8 @@ class Bridge:
         if gains != self.gains:  # programs load gains once in a while, not every frame
             self.gains = gains
             driven = (j["enabled"] != 0) & (j["p"] > 0) & power
-            # robot.servo's mapping, for all joints at once
-            kp = np.where(driven, self.gain_scale * j["p"] / 4 * tau_per_rad, 0.0)
-            kv = np.where(driven, self.gain_scale * j["d"] / 2 * FRAME_S * tau_per_rad, 0.0)
+            kp, kv = servo_gains(self.gain_scale * j["p"], self.gain_scale * j["d"], tau_per_rad)
+            kp, kv = np.where(driven, kp, 0.0), np.where(driven, kv, 0.0)
             r.m.actuator_gainprm[act, 0] = kp
             r.m.actuator_biasprm[act, 1] = -kp
             r.m.actuator_biasprm[act, 2] = -kv

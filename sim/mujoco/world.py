@@ -127,8 +127,7 @@ class Robot:
         a = self.act[num][0]
         if range_rad is None:
             range_rad = self.m.actuator_ctrlrange[a, 1] - self.m.actuator_ctrlrange[a, 0]
-        tau = self.m.actuator_forcerange[a, 1]
-        self.set_gain(num, p / 4 * tau / range_rad, d / 2 * FRAME_S * tau / range_rad)
+        self.set_gain(num, *servo_gains(p, d, self.m.actuator_forcerange[a, 1] / range_rad))
 
     def target(self, num, rad):
         self.d.ctrl[self.act[num][0]] = rad
@@ -250,6 +249,13 @@ class World:
         if wall_s:
             line += f"; whole run {wall_s:.2f} s wall -> {sim_s / wall_s:.2f} x real time"
         return line
+
+
+def servo_gains(p, d, tau_per_rad):
+    """Position actuator kp, kv from (already scaled) P and D gains and the actuator's
+    torque limit per radian of software range (bridge.py: gain mapping); numbers or
+    numpy arrays."""
+    return p / 4 * tau_per_rad, d / 2 * FRAME_S * tau_per_rad
 
 
 def wait(futures):
