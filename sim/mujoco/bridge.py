@@ -26,6 +26,7 @@ import struct
 
 import numpy as np
 
+from robot_peer import FRAME_CAMERA_DUE, FRAME_CAMERA_NEXT
 from world import servo_gains
 
 ACCEL_MAX = 19613300  # µm/s², ±2 g (ers7-model 5.4)
@@ -66,7 +67,6 @@ JOINT = np.dtype([("id", "<u4"), ("target", "<i4"), ("measured", "<i4"), ("p", "
                   ("d", "<u2"), ("enabled", "u1"), ("reserved", "u1")])
 EAR = np.dtype([("id", "<u4"), ("state", "<u4")])
 LED_SIZE = 8
-FRAME_CAMERA_DUE, FRAME_CAMERA_NEXT = 2, 16
 READING = np.dtype([("id", "<u4"), ("value", "<i4")])
 COUNT = struct.Struct("<H")
 

@@ -287,8 +287,7 @@ def serve(a, world, links, pushes, state):
         late = {link.index: f.frame for link, f in live if link.index in due and link.index not in poses}
         if late:
             pictures = pictures + take_pictures(world, links, late)
-            if state:
-                poses = {**poses, **{k: camera_pose(world, k) for k in late}}
+            poses = {**poses, **{k: camera_pose(world, k) for k in late}}
         for link, f in live:
             link.bridge.apply(f)
         t_ms = live[0][1].time_ms
@@ -311,7 +310,7 @@ def serve(a, world, links, pushes, state):
         # The state now is the one the next frame begins with.
         soon = {link.index: (f.frame + 1) & 0xFFFFFFFF for link, f in live if link.camera and f.camera_next}
         ahead = take_pictures(world, links, soon) if soon else []
-        ahead_poses = {k: camera_pose(world, k) for k in soon} if state else dict.fromkeys(soon)
+        ahead_poses = {k: camera_pose(world, k) for k in soon}
 
 
 def take_pictures(world, links, frames):

@@ -166,13 +166,6 @@ class Robot:
             low = min(low, b)
         return low
 
-    def value(self, name):
-        return self.d.sensordata[self.sensor[name]]
-
-    def accel(self):
-        adr = self.sensor["accel"]
-        return self.d.sensordata[adr:adr + 3]
-
     def place(self):
         """Trunk position (m) and orientation quaternion (w, x, y, z)."""
         q = self.d.qpos[self.root_q:self.root_q + 7]
@@ -230,10 +223,6 @@ class World:
         self.cameras.update(self.d, robots)
         self.images += len(robots)
         return self.cameras.submit(robots, deliver)
-
-    def render(self, robots, deliver):
-        """expose() and wait until every picture is delivered."""
-        wait(self.expose(robots, deliver))
 
     def report(self, wall_s=None):
         sim_s = self.frames * FRAME_S
