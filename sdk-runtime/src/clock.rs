@@ -152,9 +152,14 @@ impl Clock {
 
     /// Blocks the calling thread until virtual time has advanced by `d`.
     pub fn sleep(&self, d: Duration) {
+        let until = self.since_boot() + d;
+        self.wait_until(until);
+    }
+
+    /// Blocks the calling thread until virtual time has reached `t` (since boot).
+    pub fn wait_until(&self, t: Duration) {
         let mut s = self.lock();
-        let until = s.now + d;
-        while s.now < until {
+        while s.now < t {
             s = self.tick.wait(s).unwrap_or_else(|p| p.into_inner());
         }
     }

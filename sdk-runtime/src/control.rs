@@ -79,9 +79,7 @@ pub fn command(rt: &Runtime, line: &str) -> String {
             }
             let target = rt.clock.since_boot() + crate::clock::FRAME * frames as u32;
             rt.clock.step(frames);
-            while rt.clock.since_boot() < target {
-                std::thread::sleep(Duration::from_micros(200));
-            }
+            rt.clock.wait_until(target);
             let at = rt.clock.pause_settled(Duration::from_secs(5));
             format!("ok t_ms={}", at.as_millis())
         }
