@@ -183,11 +183,30 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     let mut tmp = path.as_os_str().to_owned();
     tmp.push(format!(".tmp-{}", std::process::id()));
     let tmp = PathBuf::from(tmp);
-    fs::write(&tmp, bytes).map_err(|e| Error::io(path, e))?;
-    fs::rename(&tmp, path).map_err(|e| {
+    // A failed write (disk full) or rename leaves no temp file behind.
+    fs::write(&tmp, bytes).and_then(|()| fs::rename(&tmp, path)).map_err(|e| {
         let _ = fs::remove_file(&tmp);
         Error::io(path, e)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_failed_atomic_write_names_the_file_and_leaves_nothing_behind() {
+        let dir = tempfile::tempdir().unwrap();
+        // The target is a directory: the rename fails after the temp file was written.
+        let target = dir.path().join("STAMP");
+        fs::create_dir(&target).unwrap();
+        fs::write(target.join("x"), b"keep").unwrap();
+        let err = write_atomic(&target, b"new").unwrap_err().to_string();
+        assert!(err.contains("STAMP"), "{err}");
+        let left: Vec<_> = fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(left, vec![std::ffi::OsString::from("STAMP")]);
+        assert_eq!(fs::read(target.join("x")).unwrap(), b"keep");
+    }
 }
 
 fn install_tools(root: &Path, exe: &[u8]) -> Result<(), Error> {
