@@ -13,6 +13,11 @@ pub const EPOCH_2000: i64 = 946_684_800;
 /// One robot frame.
 pub const FRAME: Duration = Duration::from_millis(8);
 
+/// The factors `--speed` and the control socket accept: a frame of 8 ms takes from
+/// 0.8 s (0.01) down to 8 us (1000) of real time. Slower is a pause (use `pause`), faster
+/// is what `max` does without dropping frames.
+pub const SPEED_RANGE: (f64, f64) = (0.01, 1000.0);
+
 /// How fast virtual time runs.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Speed {
@@ -29,8 +34,9 @@ impl std::str::FromStr for Speed {
             return Ok(Speed::Max);
         }
         match s.parse::<f64>() {
-            Ok(f) if f.is_finite() && f > 0.0 && f <= 1000.0 => Ok(Speed::Factor(f)),
-            _ => Err(format!("`{s}` is not a speed: give a factor in (0, 1000] (1 = real time) or `max`")),
+            Ok(f) if (SPEED_RANGE.0..=SPEED_RANGE.1).contains(&f) => Ok(Speed::Factor(f)),
+            Ok(_) => Err(format!("speed `{s}` is out of range: give a factor from {} to {} (1 = real time) or `max`", SPEED_RANGE.0, SPEED_RANGE.1)),
+            _ => Err(format!("`{s}` is not a speed: give a factor from {} to {} (1 = real time) or `max`", SPEED_RANGE.0, SPEED_RANGE.1)),
         }
     }
 }
@@ -185,6 +191,12 @@ mod tests {
         assert_eq!("max".parse::<Speed>(), Ok(Speed::Max));
         assert_eq!("2.5".parse::<Speed>(), Ok(Speed::Factor(2.5)));
         assert!("0".parse::<Speed>().is_err() && "fast".parse::<Speed>().is_err());
+        for bad in ["1e-300", "0.001", "1001", "inf", "NaN", "-1"] {
+            let e = bad.parse::<Speed>().unwrap_err();
+            assert!(e.contains("0.01 to 1000"), "{bad}: {e}");
+        }
+        assert_eq!("0.01".parse::<Speed>(), Ok(Speed::Factor(0.01)));
+        assert_eq!("1000".parse::<Speed>(), Ok(Speed::Factor(1000.0)));
         let c = Clock::new(Speed::Max);
         assert_eq!(c.since_boot(), Duration::ZERO);
         c.advance();

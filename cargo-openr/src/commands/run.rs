@@ -122,7 +122,7 @@ pub fn parse_duration(s: &str) -> Result<Duration, String> {
     if !(v.is_finite() && v >= 0.0) {
         return Err(format!("`{s}` is not a duration (try 5s, 250ms, 2m)"));
     }
-    Ok(Duration::from_secs_f64(v * mult))
+    Duration::try_from_secs_f64(v * mult).map_err(|_| format!("`{s}` is too long a duration (at most {} s)", Duration::MAX.as_secs()))
 }
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
@@ -297,5 +297,6 @@ mod tests {
         assert_eq!(parse_duration("1.5"), Ok(Duration::from_millis(1500)));
         assert!(parse_duration("soon").is_err());
         assert!(parse_duration("-1s").is_err());
+        assert!(parse_duration("1e300s").unwrap_err().contains("too long"));
     }
 }

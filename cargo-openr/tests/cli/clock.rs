@@ -69,6 +69,8 @@ fn control_socket_pauses_steps_and_resumes() {
     let stepped = ask(&mut conn, &mut reader, "step 10");
     assert_eq!(t_ms(&stepped), t_ms(&paused) + 80, "10 frames of 8 ms: {stepped}");
     assert!(ask(&mut conn, &mut reader, "speed fast").starts_with("error: "));
+    let tiny = ask(&mut conn, &mut reader, "speed 1e-300");
+    assert!(tiny.starts_with("error: ") && tiny.contains("0.01 to 1000"), "{tiny}");
     assert!(ask(&mut conn, &mut reader, "jump").starts_with("error: unknown command"));
     assert_eq!(ask(&mut conn, &mut reader, "speed max"), "ok");
     assert!(ask(&mut conn, &mut reader, "resume").starts_with("ok"));
@@ -84,4 +86,25 @@ fn control_socket_pauses_steps_and_resumes() {
         std::thread::sleep(Duration::from_millis(20));
     };
     assert!(status.success());
+}
+
+#[test]
+fn numeric_options_out_of_range_are_refused_by_name() {
+    let p = build("hello");
+    let ms = p.ms();
+    let run = |args: &[&str], env: &[(&str, &str)]| {
+        let out = Command::new(exe()).env("OPENRSDK_ROOT", sdk_root()).envs(env.iter().copied()).arg("run").arg(&ms).args(args).output().unwrap();
+        (out.status.code(), String::from_utf8_lossy(&out.stderr).into_owned())
+    };
+    for speed in ["1e-300", "0.001", "5000", "inf"] {
+        let (code, err) = run(&["--speed", speed, "--for", "1s"], &[]);
+        assert!(code.is_some_and(|c| c != 0), "--speed {speed} ran: {err}");
+        assert!(err.contains("--speed") && err.contains("0.01 to 1000"), "--speed {speed}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+    let (code, err) = run(&["--for", "1s"], &[("OPENR_SPEED", "1e-300")]);
+    assert!(code.is_some_and(|c| c != 0) && err.contains("OPENR_SPEED") && err.contains("0.01 to 1000"), "{err}");
+    let (code, err) = run(&["--for", "1e300s"], &[]);
+    assert!(code.is_some_and(|c| c != 0) && err.contains("--for") && err.contains("too long"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
 }
