@@ -22,6 +22,10 @@ pub enum ErrorKind {
     CommandFailed { command: String, status: String },
     /// An `.ocf` file is malformed (object-model 1.3).
     Ocf { path: PathBuf, line: usize, message: String },
+    /// The link failed; `log` is what the linker printed.
+    LinkFailed { command: String, status: String, log: String },
+    /// The link failed on symbols nothing defines (`-z defs`).
+    Undefined { output: PathBuf, references: Vec<crate::ldlog::UndefinedRef>, log: String },
     /// The linked object lacks what the runtime needs.
     BadObject { path: PathBuf, message: String },
 }
@@ -58,9 +62,36 @@ impl fmt::Display for Error {
             ErrorKind::Ocf { path, line, message } => {
                 write!(f, "{}:{line}: ocf format error: {message}", path.display())
             }
+            ErrorKind::LinkFailed { command, status, log } => {
+                write!(f, "running the following command failed ({status}):\n  {command}")?;
+                indented(f, "the linker said:", log)
+            }
+            ErrorKind::Undefined { output, references, log } => {
+                write!(f, "cannot link {}:", output.display())?;
+                for r in references {
+                    write!(f, "\n  {r}")?;
+                }
+                write!(f, "\n  hint: no object, archive or library of the link defines {}; define {}, add the object or \
+                           archive that does (libraries, -lNAME, after the objects that use them), or check the \
+                           spelling and parameter types of the declaration",
+                    if references.len() == 1 { "it" } else { "them" }, if references.len() == 1 { "it" } else { "them" })?;
+                indented(f, "the linker said:", log)
+            }
             ErrorKind::BadObject { path, message } => write!(f, "{}: {message}", path.display()),
         }
     }
+}
+
+/// `title` and `text` indented under it, when there is text.
+fn indented(f: &mut fmt::Formatter<'_>, title: &str, text: &str) -> fmt::Result {
+    if text.trim().is_empty() {
+        return Ok(());
+    }
+    write!(f, "\n  {title}")?;
+    for line in text.trim_end().lines() {
+        write!(f, "\n    {line}")?;
+    }
+    Ok(())
 }
 
 impl std::error::Error for Error {}

@@ -16,6 +16,7 @@ mod compile;
 mod error;
 mod gzcp;
 pub mod install;
+pub mod ldlog;
 mod legacy_notes;
 pub mod mkbin;
 pub mod ocf;

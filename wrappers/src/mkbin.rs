@@ -110,7 +110,8 @@ fn lib_root(opts: &Options, own_root: &Path) -> PathBuf {
 }
 
 /// Runs the whole link; on success the output exists and has the entry symbols, on
-/// failure nothing is left at the output path.
+/// failure nothing is left at the output path, nor the `.snap.*` intermediates (on
+/// success they stay, as Sony's did).
 pub fn link(opts: &Options, own_root: &Path) -> Result<PathBuf, Error> {
     let output = opts.output.clone().unwrap_or_else(|| PathBuf::from("a.bin"));
     let base = output.to_string_lossy().strip_suffix(".bin").map(PathBuf::from).unwrap_or_else(|| output.clone());
@@ -131,31 +132,65 @@ pub fn link(opts: &Options, own_root: &Path) -> Result<PathBuf, Error> {
     }
     let snap_cc = with_ext(&base, ".snap.cc");
     let snap_o = with_ext(&base, ".snap.o");
-    fs::write(&snap_cc, snapshot_source(&ocf)).map_err(|e| Error::io(&snap_cc, e))?;
+    let tmp = with_ext(&output, ".partial");
+    let linked = fs::write(&snap_cc, snapshot_source(&ocf))
+        .map_err(|e| Error::io(&snap_cc, e))
+        .and_then(|()| compile_snapshot(&snap_cc, &snap_o, &root, opts.verbose))
+        .and_then(|()| link_shared(opts, &root, &snap_o, &tmp, &output))
+        .and_then(|()| check_entry_symbols(&tmp));
+    if let Err(e) = linked {
+        for f in [&tmp, &snap_o, &snap_cc] {
+            let _ = fs::remove_file(f);
+        }
+        return Err(e);
+    }
+    fs::rename(&tmp, &output).map_err(|e| Error::io(&output, e))?;
+    Ok(output)
+}
+
+fn compile_snapshot(snap_cc: &Path, snap_o: &Path, root: &Path, verbose: bool) -> Result<(), Error> {
     let cxx = host_tool("g++", &["OPENR_HOST_CXX"])?;
     let mut cc = Command::new(&cxx);
-    cc.args(["-fPIC", "-c", "-o"]).arg(&snap_o).arg(&snap_cc);
-    run_cmd(&mut cc, &root, opts.verbose)?;
+    cc.args(["-fPIC", "-c", "-o"]).arg(snap_o).arg(snap_cc);
+    run_cmd(&mut cc, root, verbose)
+}
 
-    let tmp = with_ext(&output, ".partial");
+/// The host link of one object into `tmp`.
+///
+/// Undefined symbols are link errors (`-z defs`), as they were for Sony's mkbin, instead
+/// of surfacing only when the runtime `dlopen`s the object. That is exact for this host:
+/// an object needs nothing from the runtime executable by name. The OPEN-R archives and
+/// Rust objects find the runtime's tables with `dlsym(RTLD_DEFAULT, "openr_runtime_api_v1")`
+/// (and `openr_runtime_net_v1`), and the runtime's other export, `fopen64`, interposes a
+/// libc function the object links anyway. So every symbol must come from the object, its
+/// archives, the OPEN-R archives or the shared C/C++ runtime g++ adds (libstdc++, libm,
+/// libc, libgcc_s) and `-ldl`; a user's `-lpthread`, `-lrt`… are on the line too.
+fn link_shared(opts: &Options, root: &Path, snap_o: &Path, tmp: &Path, output: &Path) -> Result<(), Error> {
+    let cxx = host_tool("g++", &["OPENR_HOST_CXX"])?;
     let mut ld = Command::new(&cxx);
-    ld.args(["-shared", "-fPIC", "-Wl,-Bsymbolic"]);
+    ld.args(["-shared", "-fPIC", "-Wl,-Bsymbolic", "-Wl,-z,defs", "-Wl,--demangle"]);
     ld.arg(format!("-Wl,--wrap={}", WRAPPED.join(",--wrap=")));
     ld.arg(format!("-L{}", root.join("OPEN_R/lib").display()));
-    ld.arg("-o").arg(&tmp).arg(&snap_o).args(&opts.link_args);
+    ld.arg("-o").arg(tmp).arg(snap_o).args(&opts.link_args);
     if opts.default_libs {
         ld.arg("-Wl,--start-group");
         ld.args(DEFAULT_LIBS.iter().map(|l| format!("-l{l}")));
         ld.arg("-Wl,--end-group");
     }
     ld.arg("-ldl");
-    let linked = run_cmd(&mut ld, &root, opts.verbose).and_then(|()| check_entry_symbols(&tmp));
-    if let Err(e) = linked {
-        let _ = fs::remove_file(&tmp);
-        return Err(e);
+    let (line, out) = run_captured(&mut ld, root, opts.verbose)?;
+    let log = String::from_utf8_lossy(&out.stderr).into_owned() + &String::from_utf8_lossy(&out.stdout);
+    if out.status.success() {
+        // Warnings reach the user as they would have with an inherited stderr.
+        use std::io::Write;
+        let _ = std::io::stderr().write_all(log.as_bytes());
+        return Ok(());
     }
-    fs::rename(&tmp, &output).map_err(|e| Error::io(&output, e))?;
-    Ok(output)
+    let undefined = crate::ldlog::undefined_references(&log);
+    if undefined.is_empty() {
+        return Err(ErrorKind::LinkFailed { command: line, status: out.status.to_string(), log }.into());
+    }
+    Err(ErrorKind::Undefined { output: output.to_path_buf(), references: undefined, log }.into())
 }
 
 /// `<base><ext>` (`foo` + `.ocf`), keeping any directory.
@@ -180,6 +215,17 @@ fn snapshot_source(ocf: &Ocf) -> String {
 
 /// Runs a child with mkbin's environment (`LC_ALL=C`, `<root>/bin` first in PATH).
 fn run_cmd(cmd: &mut Command, root: &Path, verbose: bool) -> Result<(), Error> {
+    let line = prepare(cmd, root, verbose);
+    let status = cmd.status().map_err(|e| Error::io(PathBuf::from(cmd.get_program()), e))?;
+    if status.success() {
+        Ok(())
+    } else {
+        Err(ErrorKind::CommandFailed { command: line, status: status.to_string() }.into())
+    }
+}
+
+/// Sets mkbin's environment on `cmd`, shows it when verbose; returns its command line.
+fn prepare(cmd: &mut Command, root: &Path, verbose: bool) -> String {
     let path = std::env::var_os("PATH").unwrap_or_default();
     let mut dirs = vec![root.join("bin")];
     dirs.extend(std::env::split_paths(&path));
@@ -188,12 +234,14 @@ fn run_cmd(cmd: &mut Command, root: &Path, verbose: bool) -> Result<(), Error> {
     if verbose {
         eprintln!("{line}");
     }
-    let status = cmd.status().map_err(|e| Error::io(PathBuf::from(cmd.get_program()), e))?;
-    if status.success() {
-        Ok(())
-    } else {
-        Err(ErrorKind::CommandFailed { command: line, status: status.to_string() }.into())
-    }
+    line
+}
+
+/// Same as [`run_cmd`], returning the child's output instead of passing it through.
+fn run_captured(cmd: &mut Command, root: &Path, verbose: bool) -> Result<(String, std::process::Output), Error> {
+    let line = prepare(cmd, root, verbose);
+    let out = cmd.output().map_err(|e| Error::io(PathBuf::from(cmd.get_program()), e))?;
+    Ok((line, out))
 }
 
 fn render(cmd: &Command) -> String {

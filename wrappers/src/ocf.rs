@@ -51,10 +51,20 @@ pub fn parse(path: &Path, text: &str) -> Result<Ocf, Error> {
             Some(d) => (d, 1024),
             None => (value, 1),
         };
-        digits
+        let n = digits
             .parse::<u64>()
-            .map(|n| n * mult)
-            .map_err(|_| err(line, format!("{field} must be a number (optionally with a K suffix), found `{value}`")))
+            .map_err(|_| err(line, format!("{field} must be a number (optionally with a K suffix), found `{value}`")))?;
+        n.checked_mul(mult).ok_or_else(|| err(line, format!("{field} `{value}` is too large (at most {} bytes)", u64::MAX)))
+    };
+    // Sony's gensnap took anything but the exact word as the other choice; a typo
+    // (`cahce`) then silently changed the object's memory setup. Only the documented
+    // words are accepted here.
+    let choice = |field: &str, (line, value): (usize, &str), yes: &str, no: &str| -> Result<bool, Error> {
+        match value {
+            _ if value == yes => Ok(true),
+            _ if value == no => Ok(false),
+            _ => Err(err(line, format!("{field} must be `{yes}` or `{no}`, found `{value}`"))),
+        }
     };
     let (prio_line, prio) = v[3];
     Ok(Ocf {
@@ -62,16 +72,28 @@ pub fn parse(path: &Path, text: &str) -> Result<Ocf, Error> {
         stack: size("STACK", v[1])?,
         heap: size("HEAP", v[2])?,
         priority: prio.parse().map_err(|_| err(prio_line, format!("PRIO must be a number, found `{prio}`")))?,
-        cache: v[4].1 == "cache",
-        tlb: v[5].1 == "tlb",
-        user_mode: v[6].1 == "user",
+        cache: choice("CACHE", v[4], "cache", "nocache")?,
+        tlb: choice("TLB", v[5], "tlb", "notlb")?,
+        user_mode: choice("MODE", v[6], "user", "kernel")?,
+    })
+}
+
+/// The text of an ocf read as bytes: UTF-8 (ASCII in practice), else an error at the
+/// line of the first byte that is not.
+pub fn decode<'a>(path: &Path, bytes: &'a [u8]) -> Result<&'a str, Error> {
+    std::str::from_utf8(bytes).map_err(|e| {
+        let at = e.valid_up_to();
+        let line = 1 + bytes[..at].iter().filter(|b| **b == b'\n').count();
+        let column = 1 + at - bytes[..at].iter().rposition(|b| *b == b'\n').map_or(0, |i| i + 1);
+        let message = format!("byte 0x{:02x} at column {column} is not text (the file must be ASCII or UTF-8)", bytes[at]);
+        ErrorKind::Ocf { path: path.to_path_buf(), line, message }.into()
     })
 }
 
 /// Reads and parses an ocf file.
 pub fn read(path: &Path) -> Result<Ocf, Error> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-    parse(path, &text)
+    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    parse(path, decode(path, &bytes)?)
 }
 
 #[cfg(test)]
@@ -120,5 +142,34 @@ mod tests {
         assert!(e.starts_with("x.ocf:1: ocf format error: STACK must be a number"), "{e}");
         let e = p("  # only a comment\n").unwrap_err().to_string();
         assert!(e.contains("empty file"), "{e}");
+    }
+
+    #[test]
+    fn only_the_documented_choice_words() {
+        let e = p("object a 1 2 3\ncahce tlb user").unwrap_err().to_string();
+        assert_eq!(e, "x.ocf:2: ocf format error: CACHE must be `cache` or `nocache`, found `cahce`");
+        let e = p("object a 1 2 3 cache TLB user").unwrap_err().to_string();
+        assert_eq!(e, "x.ocf:1: ocf format error: TLB must be `tlb` or `notlb`, found `TLB`");
+        let e = p("object a 1 2 3 cache tlb\n\nsuper").unwrap_err().to_string();
+        assert_eq!(e, "x.ocf:3: ocf format error: MODE must be `user` or `kernel`, found `super`");
+    }
+
+    #[test]
+    fn sizes_that_overflow_are_errors() {
+        let e = p("object a\n18446744073709551615K 2 3 cache tlb user").unwrap_err().to_string();
+        assert_eq!(e, format!("x.ocf:2: ocf format error: STACK `18446744073709551615K` is too large (at most {} bytes)", u64::MAX));
+        let e = p("object a 1 99999999999999999999 3 cache tlb user").unwrap_err().to_string();
+        assert!(e.starts_with("x.ocf:1: ocf format error: HEAP must be a number"), "{e}");
+        assert_eq!(p("object a 18014398509481983K 1 3 cache tlb user").unwrap().stack, 18014398509481983 * 1024);
+    }
+
+    #[test]
+    fn a_byte_that_is_not_text_has_a_line() {
+        let bytes = b"# ok\nobject a 1 2 3\ncache tlb us\xe9r\n";
+        let e = decode(Path::new("x.ocf"), bytes).unwrap_err().to_string();
+        assert_eq!(e, "x.ocf:3: ocf format error: byte 0xe9 at column 13 is not text (the file must be ASCII or UTF-8)");
+        let e = decode(Path::new("x.ocf"), b"\xff").unwrap_err().to_string();
+        assert!(e.starts_with("x.ocf:1: ocf format error: byte 0xff at column 1"), "{e}");
+        assert_eq!(decode(Path::new("x.ocf"), "object \u{e9}".as_bytes()).unwrap(), "object \u{e9}");
     }
 }

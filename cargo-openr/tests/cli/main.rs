@@ -5,6 +5,7 @@ mod camera;
 mod clock;
 mod corpus;
 mod front;
+mod link;
 mod mujoco;
 mod net;
 mod peer;
