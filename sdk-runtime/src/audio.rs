@@ -4,8 +4,8 @@
 //! lasts (`dataSize / (rate × bytes × channels)`, rounded up to 8 ms frames); a vector
 //! that has played is released and its subject made ready, as the effector does. What
 //! plays is appended to a WAV file (`--speaker-wav`), silence while motor power (the
-//! amplifier) is off. Mic: every 16 ms a block of 256 stereo 16-bit samples at 16 kHz,
-//! read from a WAV file (`--mic-wav`, converted to that format) or silence.
+//! amplifier) is off. Mic: a block of 16 kHz stereo 16-bit samples every 16 ms
+//! (ERS-7, 1024 bytes) or 32 ms (ERS-2xx, 2048 bytes), read from a WAV file (`--mic-wav`, converted to that format) or silence.
 use std::collections::VecDeque;
 use std::fs::File;
 use std::io::{Seek, SeekFrom, Write};
@@ -14,8 +14,6 @@ use std::path::{Path, PathBuf};
 use crate::error::{Error, Result};
 use crate::robot::vectors;
 
-/// Mic block: 16 ms of 16 kHz stereo 16-bit (robot-api 8.6, ERS-7).
-pub const MIC_BLOCK_BYTES: usize = 1024;
 /// The microphones' PCM: rate, channels, bits.
 pub const MIC_FORMAT: (u32, u16, u16) = (16000, 2, 16);
 /// Speaker tokens live apart from effector tokens.
@@ -241,10 +239,10 @@ impl Mic {
         Mic { pcm, pos: 0 }
     }
 
-    /// The next 16 ms block.
-    pub fn next_block(&mut self) -> Vec<u8> {
-        let mut block = vec![0u8; MIC_BLOCK_BYTES];
-        let n = self.pcm.len().saturating_sub(self.pos).min(MIC_BLOCK_BYTES);
+    /// The next block of `len` bytes (the design's block, `Design::mic_block_bytes`).
+    pub fn next_block(&mut self, len: usize) -> Vec<u8> {
+        let mut block = vec![0u8; len];
+        let n = self.pcm.len().saturating_sub(self.pos).min(len);
         block[..n].copy_from_slice(&self.pcm[self.pos..self.pos + n]);
         self.pos += n;
         block
@@ -268,7 +266,7 @@ mod tests {
         let s = |i: usize| i16::from_le_bytes([pcm[i * 2], pcm[i * 2 + 1]]);
         assert_eq!((s(0), s(1), s(4), s(5), s(8)), (0, 0, 127 << 8, 127 << 8, -128 << 8));
         let mut mic = Mic::new(pcm);
-        let b = mic.next_block();
+        let b = mic.next_block(1024);
         assert_eq!(b.len(), 1024);
         assert!(b[32..].iter().all(|x| *x == 0), "then silence");
     }

@@ -174,10 +174,11 @@ impl VrService {
             }
         }
         if out.mic_due && self.wiring().providers[SERVICE_MIC].is_some() {
+            let len = self.robot().model().design().mic_block_bytes();
             let block = if self.peers.has_role(crate::peer::wire::ROLE_MIC) {
-                self.peers.mic_block()
+                self.peers.mic_block(len)
             } else {
-                self.mic.lock().unwrap_or_else(|p| p.into_inner()).next_block()
+                self.mic.lock().unwrap_or_else(|p| p.into_inner()).next_block(len)
             };
             let mic_id = self.robot().primitive_of(crate::robot::model::Part::Mic).unwrap_or(0);
             if let Ok(v) = vectors::build_mic_vector(mic_id, out.frame, &block) {

@@ -607,26 +607,7 @@ fn soundplay_streams_the_wav_gaplessly_to_the_speaker() {
 fn soundrec_records_the_microphone_into_a_wav() {
     let b = build("soundrec");
     let ms = b.ms();
-    // two seconds of stereo test signal (300 Hz left, 500 Hz right) for the microphones
-    let rate = 16000u32;
-    let mut pcm = Vec::new();
-    for i in 0..rate * 2 {
-        let t = i as f64 / rate as f64;
-        pcm.extend_from_slice(&((6000.0 * (2.0 * std::f64::consts::PI * 300.0 * t).sin()) as i16).to_le_bytes());
-        pcm.extend_from_slice(&((3000.0 * (2.0 * std::f64::consts::PI * 500.0 * t).sin()) as i16).to_le_bytes());
-    }
-    let mut wav = Vec::new();
-    wav.extend_from_slice(b"RIFF");
-    wav.extend_from_slice(&(36 + pcm.len() as u32).to_le_bytes());
-    wav.extend_from_slice(b"WAVEfmt ");
-    for v in [16u32.to_le_bytes().to_vec(), 1u16.to_le_bytes().to_vec(), 2u16.to_le_bytes().to_vec(), rate.to_le_bytes().to_vec(),
-        (rate * 4).to_le_bytes().to_vec(), 4u16.to_le_bytes().to_vec(), 16u16.to_le_bytes().to_vec()]
-    {
-        wav.extend_from_slice(&v);
-    }
-    wav.extend_from_slice(b"data");
-    wav.extend_from_slice(&(pcm.len() as u32).to_le_bytes());
-    wav.extend_from_slice(&pcm);
+    let (pcm, wav) = stereo_test_wav(2);
     let mic = ms.parent().unwrap().join("mic.wav");
     std::fs::write(&mic, &wav).unwrap();
 
@@ -647,4 +628,51 @@ fn soundrec_records_the_microphone_into_a_wav() {
     assert_eq!((channels, r, bits, data.len()), (2, 16000, 16, 64000));
     // the recording is a piece of the microphone signal
     assert!(pcm.windows(1024).any(|w| w == &data[..1024]), "recorded samples are not the mic input");
+}
+
+/// `seconds` of a stereo test signal (300 Hz left, 500 Hz right) for the microphones:
+/// the PCM and the WAV file holding it.
+fn stereo_test_wav(seconds: u32) -> (Vec<u8>, Vec<u8>) {
+    let rate = 16000u32;
+    let mut pcm = Vec::new();
+    for i in 0..rate * seconds {
+        let t = i as f64 / rate as f64;
+        pcm.extend_from_slice(&((6000.0 * (2.0 * std::f64::consts::PI * 300.0 * t).sin()) as i16).to_le_bytes());
+        pcm.extend_from_slice(&((3000.0 * (2.0 * std::f64::consts::PI * 500.0 * t).sin()) as i16).to_le_bytes());
+    }
+    let mut wav = Vec::new();
+    wav.extend_from_slice(b"RIFF");
+    wav.extend_from_slice(&(36 + pcm.len() as u32).to_le_bytes());
+    wav.extend_from_slice(b"WAVEfmt ");
+    for v in [16u32.to_le_bytes().to_vec(), 1u16.to_le_bytes().to_vec(), 2u16.to_le_bytes().to_vec(), rate.to_le_bytes().to_vec(),
+        (rate * 4).to_le_bytes().to_vec(), 4u16.to_le_bytes().to_vec(), 16u16.to_le_bytes().to_vec()]
+    {
+        wav.extend_from_slice(&v);
+    }
+    wav.extend_from_slice(b"data");
+    wav.extend_from_slice(&(pcm.len() as u32).to_le_bytes());
+    wav.extend_from_slice(&pcm);
+    (pcm, wav)
+}
+
+#[test]
+fn the_microphones_deliver_16_khz_stereo_on_every_design() {
+    let b = build("micrate");
+    let ms = b.ms();
+    let (pcm, wav) = stereo_test_wav(5);
+    let mic = ms.parent().unwrap().join("mic.wav");
+    std::fs::write(&mic, &wav).unwrap();
+    // ERS-2xx: 2048-byte blocks every 32 ms (robot-api 8.6); ERS-7: 1024 every 16 ms
+    for (design, block) in [("ERS-210", 2048), ("ERS-7", 1024)] {
+        let _ = std::fs::remove_file(ms.join("MIC.RAW"));
+        let out = run_ms(&ms, &["--design", design, "--for", "4100ms", "--speed", "max", "--mic-wav", mic.to_str().unwrap()]);
+        assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+        assert!(out.stdout.contains(&format!("MicRate : measuring the microphones of {design}")), "{}", out.stdout);
+        assert!(out.stdout.contains(&format!("MicRate : block size {block}\n")), "{design}:\n{}", out.stdout);
+        assert!(out.stdout.contains("MicRate : 256000 bytes in 4000 ms of sound: 64000 bytes/s"), "{design}:\n{}", out.stdout);
+        // no gap and no repeat: what was recorded is the start of the mic signal
+        let raw = std::fs::read(ms.join("MIC.RAW")).expect("MIC.RAW written");
+        assert_eq!(raw.len(), 256000 + block, "{design}");
+        assert!(raw == pcm[..raw.len()], "{design}: the recording is not the mic input from its start");
+    }
 }

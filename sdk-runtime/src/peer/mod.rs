@@ -20,7 +20,7 @@ use std::os::unix::net::{UnixListener, UnixStream};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 
-use crate::audio::{Format, MIC_BLOCK_BYTES as MIC_BLOCK, MIC_FORMAT};
+use crate::audio::{Format, MIC_FORMAT};
 use crate::error::{Error, ErrorKind, Result};
 use crate::robot::model::{PrimitiveKind, SensorKind};
 use crate::robot::{PendingFrame, PrimitiveId, Readings, VirtualRobot};
@@ -162,11 +162,11 @@ impl Hub {
 
     /// The next microphone block from the peer holding the mic role (silence when it
     /// sent too little).
-    pub fn mic_block(&self) -> Vec<u8> {
+    pub fn mic_block(&self, len: usize) -> Vec<u8> {
         let mut st = self.lock();
-        let n = st.mic.len().min(MIC_BLOCK);
+        let n = st.mic.len().min(len);
         let mut block: Vec<u8> = st.mic.drain(..n).collect();
-        block.resize(MIC_BLOCK, 0);
+        block.resize(len, 0);
         block
     }
 
@@ -372,7 +372,7 @@ fn welcome_payload(rt: &Runtime, granted: u32, clock: bool) -> Vec<u8> {
     o.u16(VERSION).u16(REVISION).u32(granted).u32(if clock { FLAG_CLOCK } else { 0 });
     o.u32(8000).u32(frame).u64(time_ms);
     o.u16(w as u16).u16(h as u16).u16(design.camera_fps() as u16);
-    o.u16(design.mic_period_frames() as u16).u16(MIC_BLOCK as u16).u32(MIC_FORMAT.0).u16(MIC_FORMAT.1).u16(MIC_FORMAT.2);
+    o.u16(design.mic_period_frames() as u16).u16(design.mic_block_bytes() as u16).u32(MIC_FORMAT.0).u16(MIC_FORMAT.1).u16(MIC_FORMAT.2);
     o.str(design.name());
     o.u16(model.primitives().len() as u16);
     for p in model.primitives() {

@@ -74,6 +74,11 @@ impl Design {
             _ => 4,
         }
     }
+    /// Bytes of one microphone block: its period of 16 kHz 16-bit stereo (robot-api 8.6:
+    /// 1024 bytes every 16 ms on the ERS-7, 2048 every 32 ms on the ERS-2xx).
+    pub fn mic_block_bytes(self) -> usize {
+        self.mic_period_frames() as usize * 512
+    }
 }
 
 /// `OSensorType`-like classification of a Sensor primitive.
