@@ -198,7 +198,7 @@ struct openr_host_api {
 
 /* What the runtime tells a system object (sent to its vr_attach selector). */
 struct openr_vr_event {
-    unsigned int kind;             /* OPENR_VR_DONE or OPENR_VR_DATA */
+    unsigned int kind;             /* OPENR_VR_DONE, OPENR_VR_DATA or OPENR_VR_CONNECTED */
     unsigned int service;          /* OPENR_VR_* */
     unsigned long long token;      /* DONE: the vr_submit token */
     unsigned int mem_id;           /* DATA: a new vector in shared memory; the event owns
@@ -208,6 +208,10 @@ struct openr_vr_event {
 };
 #define OPENR_VR_DONE 1
 #define OPENR_VR_DATA 2
+/* The service manager has just connected a subject to the object's observer (its
+ * newest subject): the effector and the speaker assert ready to it now, before any
+ * user Start (robot-api 8.2.3, 8.5). Sent as a call; no other field is used. */
+#define OPENR_VR_CONNECTED 3
 
 /* Returns the runtime's table, or NULL when the object runs outside cargo-openr. */
 const struct openr_host_api* openr_host(void);

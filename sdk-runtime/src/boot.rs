@@ -160,7 +160,16 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         .name("openr-robot".into())
         .spawn(move || crate::vr::run_frames(rt))
         .map_err(|e| ErrorKind::Runtime(format!("cannot start the robot thread: {e}")))?;
-    for slot in &all {
+    // As on the robot, the system objects are up before the user objects boot; their
+    // observers assert ready at each connection (robot-api 8.2.3), so a user DoStart
+    // finds the effector and the speaker ready (object-model 2.8.1).
+    let (system, user): (Vec<_>, Vec<_>) = all.iter().partition(|s| s.oid < FIRST_OID);
+    for sel in [SEL_INIT, SEL_START] {
+        for slot in &system {
+            hook(rt, slot, sel, OREASON_BOOT, None)?;
+        }
+    }
+    for slot in &user {
         hook(rt, slot, SEL_INIT, OREASON_BOOT, None)?;
     }
     if connections.iter().any(|c| c.subject == crate::vr::CAMERA_SERVICE) {
@@ -168,7 +177,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     }
     connect_all(rt, &connect_path, &connections, opts.lenient_connect)?;
 
-    for slot in &all {
+    for slot in &user {
         // Start is not awaited: a DoStart may block (on console input, say).
         let module = slot.module.get().expect("loaded");
         let _ = rt.send(slot.oid, SEL_START, module.reason_message(OREASON_BOOT));
@@ -317,6 +326,9 @@ fn connect_all(rt: &Runtime, path: &std::path::Path, conns: &[cfg::Connection], 
                     rt.diag.warn(&format!("{}:{}: connection refused (status {status})", path.display(), c.line));
                 } else {
                     rt.diag.info(&format!("connected {} -> {}", c.subject, c.observer));
+                    if observer.oid < FIRST_OID {
+                        rt.vr.connected(rt, observer.oid, CONNECT_TIMEOUT);
+                    }
                 }
             }
             Err(e) => rt.diag.warn(&format!("{}:{}: connection failed ({e:?})", path.display(), c.line)),

@@ -25,6 +25,7 @@ pub const SERVICE_SPEAKER: usize = 3;
 pub const SERVICE_MIC: usize = 4;
 const EVENT_DONE: u32 = 1;
 const EVENT_DATA: u32 = 2;
+const EVENT_CONNECTED: u32 = 3;
 
 /// `struct openr_vr_event` (openr_host.h).
 #[repr(C)]
@@ -112,6 +113,17 @@ impl VrService {
             }
             None => false,
         }
+    }
+
+    /// The service manager connected a subject to an observer of system object `oid`:
+    /// the object asserts ready to it (robot-api 8.2.3, 8.5), and has done so when this
+    /// returns, so the Ready is queued at the subject before its Start. False when `oid`
+    /// provides no service of the robot.
+    pub fn connected(&self, rt: &Runtime, oid: usize, timeout: std::time::Duration) -> bool {
+        let provider = self.wiring().providers.iter().flatten().find(|p| p.0 == oid).copied();
+        let Some((oid, sel)) = provider else { return false };
+        let ev = VrEvent { kind: EVENT_CONNECTED, service: 0, token: 0, mem_id: 0, size: 0 };
+        rt.call(oid, sel, ev.bytes(), Some(timeout)).is_ok()
     }
 
     /// A command vector received by the effector from subject (oid, selector).

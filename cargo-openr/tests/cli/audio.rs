@@ -56,3 +56,30 @@ fn a_missing_or_bad_mic_wav_is_a_clear_error() {
     assert_ne!(out.code, Some(0));
     assert!(out.stderr.contains("bad.wav: not a usable WAV file"), "{}", out.stderr);
 }
+
+/// The PCM of speaker-start: 8 buffers of 512 samples of a 500 Hz square wave (±8000).
+fn square_wave() -> Vec<u8> {
+    (0..8 * 512).flat_map(|i| (if (i / 16) % 2 == 0 { 8000i16 } else { -8000 }).to_le_bytes()).collect()
+}
+
+#[test]
+fn the_speaker_is_ready_before_every_start_in_20_of_20_runs() {
+    // speaker-start sends both buffers in DoStart: only a speaker that asserted ready at
+    // its connection (robot-api 8.5) lets it play (object-model 2.8.1).
+    let p = build("speaker-start");
+    let dir = tempfile::tempdir().unwrap();
+    let want = square_wave();
+    let mut played = 0;
+    let mut failures = Vec::new();
+    for i in 0..20 {
+        let wav = dir.path().join(format!("speaker{i}.wav"));
+        let out = run_ms(&p.ms(), &["--speed", "max", "--for", "1s", "--speaker-wav", wav.to_str().unwrap()]);
+        let data = fs::read(&wav).map(|b| wav_data(&b).to_vec()).unwrap_or_default();
+        if out.code == Some(0) && out.stdout.contains("SpeakerStart : primed 2 buffers") && out.stdout.contains("SpeakerStart : done, 8 buffers") && data == want {
+            played += 1;
+        } else {
+            failures.push(format!("run {i}: exit {:?}, {} bytes played\n{}{}", out.code, data.len(), out.stdout, out.stderr));
+        }
+    }
+    assert_eq!(played, 20, "runs that played the whole tone; first failure:\n{}", failures.first().map_or("", |s| s));
+}

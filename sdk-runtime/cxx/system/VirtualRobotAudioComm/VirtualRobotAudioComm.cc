@@ -21,9 +21,8 @@ VirtualRobotAudioComm::DoInit(const OSystemEvent& event)
 OStatus
 VirtualRobotAudioComm::DoStart(const OSystemEvent& event)
 {
+    // The speaker asserted ready to each subject at its connection (vrConnected).
     ENABLE_ALL_SUBJECT;
-    // The speaker is ready for every subject connected to it (robot-api 8.5).
-    ASSERT_READY_TO_ALL_OBSERVER;
     return oSUCCESS;
 }
 
@@ -51,7 +50,9 @@ void
 VirtualRobotAudioComm::Event(void* msg)
 {
     const openr_vr_event* ev = static_cast<const openr_vr_event*>(msg);
-    if (ev->kind == OPENR_VR_DONE) {
+    if (ev->kind == OPENR_VR_CONNECTED) {
+        vrConnected(observer[obsSpeaker]);
+    } else if (ev->kind == OPENR_VR_DONE) {
         vrDone(observer[obsSpeaker], ev->token, &playing_);
     } else if (ev->kind == OPENR_VR_DATA) {
         vrPublish(subject[sbjMic], ev->mem_id, ev->size);

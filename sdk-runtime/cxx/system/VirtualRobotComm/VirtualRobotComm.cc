@@ -22,9 +22,8 @@ VirtualRobotComm::DoInit(const OSystemEvent& event)
 OStatus
 VirtualRobotComm::DoStart(const OSystemEvent& event)
 {
+    // The effector asserted ready to each subject at its connection (vrConnected).
     ENABLE_ALL_SUBJECT;
-    // The effector is ready for every subject connected to it (robot-api 8.2.3).
-    ASSERT_READY_TO_ALL_OBSERVER;
     return oSUCCESS;
 }
 
@@ -52,7 +51,9 @@ void
 VirtualRobotComm::Event(void* msg)
 {
     const openr_vr_event* ev = static_cast<const openr_vr_event*>(msg);
-    if (ev->kind == OPENR_VR_DONE) {
+    if (ev->kind == OPENR_VR_CONNECTED) {
+        vrConnected(observer[obsEffector]);
+    } else if (ev->kind == OPENR_VR_DONE) {
         vrDone(observer[obsEffector], ev->token, &playing_);
     } else if (ev->kind == OPENR_VR_DATA) {
         vrPublish(subject[ev->service == OPENR_VR_IMAGE ? sbjFbkImageSensor : sbjSensor], ev->mem_id, ev->size);

@@ -42,6 +42,16 @@ inline void vrDone(OObserver* obs, unsigned long long token, VRPlaying* playing)
     playing->erase(it);
 }
 
+// A subject was just connected to `obs` (it is the last of its subjects): the effector and
+// the speaker are ready for it from the connection on, before any Start (robot-api 8.2.3).
+inline void vrConnected(OObserver* obs)
+{
+    SubjectConstIterator newest = obs->end();
+    if (newest == obs->begin()) return;
+    --newest;
+    obs->AssertReady(newest->GetSubjectID());
+}
+
 // A vector the runtime made (with one reference that the event owns) goes to observers.
 inline void vrPublish(OSubject* sbj, unsigned int memID, unsigned int size)
 {
