@@ -294,3 +294,20 @@ fn net_bind_without_room_for_every_robot_fails_before_the_world_starts() {
     assert!(out.stderr.contains("--net-bind 127.255.255.255: no room for 2 consecutive robot addresses"), "{}", out.stderr);
     assert!(!out.stderr.contains("Simulating") && !out.stderr.contains("robot 0"), "nothing may start:\n{}", out.stderr);
 }
+
+#[test]
+fn bench_refuses_a_readme_without_markers_before_measuring_anything() {
+    let dir = tempfile::tempdir().unwrap();
+    let readme = dir.path().join("README.md");
+    fs::write(&readme, "# no table here\n").unwrap();
+    // --repo points at an empty directory: had the README check come after the build of
+    // bench/programs, the error would be about missing programs instead.
+    let out = cargo_openr(&["bench", "--runs", "1", "--repo", dir.path().to_str().unwrap(), "--readme", readme.to_str().unwrap()]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{t}");
+    assert!(t.contains("has no `<!-- bench:begin"), "{t}");
+    assert_eq!(fs::read_to_string(&readme).unwrap(), "# no table here\n", "nothing written");
+    let out = cargo_openr(&["bench", "--runs", "0"]);
+    assert_ne!(out.status.code(), Some(0), "{}", text(&out));
+    assert!(text(&out).contains("--runs"), "{}", text(&out));
+}

@@ -1,0 +1,238 @@
+//! `cargo openr bench`: measures the runtime's hot paths with real objects built from
+//! `bench/programs/`, next to what the machine can do without OPEN-R (a raw two-thread
+//! ping-pong over the same kind of queue) in the same run. Every figure is measured in
+//! each of `runs` rounds and reported as min / median / max ([`stats`]).
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::mpsc;
+use std::time::Instant;
+
+use anyhow::{bail, Context, Result};
+
+mod network;
+pub mod stats;
+
+use stats::{Table, Trial};
+
+/// Builds `program` (a directory with an aggregate Makefile) in `work` with the SDK root.
+fn build(program: &Path, work: &Path, root: &Path) -> Result<PathBuf> {
+    let dst = work.join(program.file_name().context("program dir")?);
+    let _ = std::fs::remove_dir_all(&dst);
+    let st = Command::new("cp").arg("-r").arg(program).arg(&dst).status()?;
+    if !st.success() {
+        bail!("cannot copy {}", program.display());
+    }
+    // bench/programs include ../../common.mk relative to their object directories.
+    let common = program.parent().context("parent")?.join("common.mk");
+    if common.exists() {
+        std::fs::copy(common, work.join("common.mk"))?;
+    }
+    let out = Command::new("make").arg(format!("OPENRSDK_ROOT={}", root.display())).arg("install").current_dir(&dst).output()?;
+    if !out.status.success() {
+        bail!("building {} failed:\n{}{}", program.display(), String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    }
+    Ok(dst.join("MS"))
+}
+
+fn run_ms(exe: &Path, ms: &Path, root: &Path) -> Result<String> {
+    let out = Command::new(exe).args(["run", "-q", "--for", "120s", "--sdk"]).arg(root).arg(ms).output()?;
+    if !out.status.success() {
+        bail!("running {} failed:\n{}", ms.display(), String::from_utf8_lossy(&out.stderr));
+    }
+    Ok(String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
+/// `key=value` fields of the first stdout line starting with `prefix`.
+fn fields(out: &str, prefix: &str) -> Vec<(String, f64)> {
+    out.lines()
+        .filter(|l| l.starts_with(prefix))
+        .flat_map(|l| l.split_whitespace())
+        .filter_map(|kv| kv.split_once('='))
+        .filter_map(|(k, v)| Some((k.to_string(), v.parse().ok()?)))
+        .collect()
+}
+
+/// The value of `key` among `fields`, or an error quoting the program's output.
+fn field(fields: &[(String, f64)], key: &str, out: &str) -> Result<f64> {
+    fields.iter().find(|(n, _)| n == key).map(|(_, v)| *v).with_context(|| format!("no {key} in:\n{out}"))
+}
+
+fn monotonic_ns() -> i64 {
+    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+    unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC, &mut ts) };
+    ts.tv_sec * 1_000_000_000 + ts.tv_nsec
+}
+
+/// The machine's limit for a message round trip between two threads over std's
+/// channel (the queue every object has): p50 and p99 in ns, and messages per second.
+pub fn raw_ping_pong(rounds: usize) -> (f64, f64, f64) {
+    let (to_b, from_a) = mpsc::channel::<u32>();
+    let (to_a, from_b) = mpsc::channel::<u32>();
+    let echo = std::thread::spawn(move || {
+        while let Ok(v) = from_a.recv() {
+            if to_a.send(v).is_err() {
+                break;
+            }
+        }
+    });
+    let mut rtt = Vec::with_capacity(rounds);
+    let start = Instant::now();
+    for i in 0..rounds as u32 {
+        let t = Instant::now();
+        to_b.send(i).expect("echo thread alive");
+        from_b.recv().expect("echo thread alive");
+        rtt.push(t.elapsed().as_nanos() as f64);
+    }
+    let secs = start.elapsed().as_secs_f64();
+    drop(to_b);
+    let _ = echo.join();
+    rtt.sort_by(|a, b| a.total_cmp(b));
+    (rtt[rounds / 2], rtt[rounds * 99 / 100], 2.0 * rounds as f64 / secs)
+}
+
+/// Runs `n` runtimes on `ms` at once for `secs` of robot time (real-time speed): the
+/// late-frame percentage over all robots and the slowest robot's lag behind real time
+/// (its wall time, process start included, minus the robot time it ran).
+fn robots_in_real_time(exe: &Path, ms: &Path, root: &Path, n: usize, secs: u64) -> Result<Trial> {
+    let t0 = Instant::now();
+    let children: Vec<_> = (0..n)
+        .map(|_| {
+            Command::new(exe)
+                .args(["run", "--for", &format!("{secs}s"), "--sdk"])
+                .arg(root)
+                .arg(ms)
+                .stdout(std::process::Stdio::null())
+                .stderr(std::process::Stdio::piped())
+                .spawn()
+        })
+        .collect::<std::io::Result<_>>()?;
+    // Reap each child on a thread of its own so that each one's end is timed when it happens.
+    let waits: Vec<_> = children.into_iter().map(|c| std::thread::spawn(move || (c.wait_with_output(), t0.elapsed()))).collect();
+    let (mut frames, mut late, mut lag) = (0u64, 0u64, 0f64);
+    for w in waits {
+        let (out, took) = w.join().map_err(|_| anyhow::anyhow!("reaper thread panicked"))?;
+        let out = out?;
+        let err = String::from_utf8_lossy(&out.stderr);
+        let line = err.lines().find(|l| l.contains("Finished")).with_context(|| format!("no summary in:\n{err}"))?;
+        let num = |suffix: &str| -> Option<u64> {
+            let before = line.split(suffix).next()?;
+            before.rsplit(|c: char| !c.is_ascii_digit()).find(|w| !w.is_empty())?.parse().ok()
+        };
+        frames += num(" frames").context("frame count")?;
+        late += num(" late").context("late count")?;
+        lag = lag.max(took.as_secs_f64() - secs as f64);
+    }
+    Ok(Trial { robots: n, late_pct: 100.0 * late as f64 / frames.max(1) as f64, lag_s: lag.max(0.0) })
+}
+
+/// Robot counts the real-time sweep tries; it stops after two failed counts in a row.
+const ROBOT_COUNTS: [usize; 8] = [1, 2, 3, 4, 6, 8, 12, 16];
+
+/// What a whole `bench` run measured.
+#[derive(Debug, Default)]
+pub struct Report {
+    pub table: Table,
+    /// The real-time sweep of each run.
+    pub sweeps: Vec<Vec<Trial>>,
+}
+
+const NOTIFY_P50: &str = "notify→ready round trip p50 (2 objects)";
+const NOTIFY_P99: &str = "notify→ready round trip p99 (2 objects)";
+const NOTIFY_RATE: &str = "object messages per second";
+const RAW_P50: &str = "raw two-thread channel ping-pong p50";
+const RAW_P99: &str = "raw two-thread channel ping-pong p99";
+const RAW_RATE: &str = "raw channel messages per second";
+
+/// The programs a run measures, built once.
+struct Built {
+    pingpong: PathBuf,
+    coldstart: PathBuf,
+    movelegs: PathBuf,
+    jitter: PathBuf,
+    camwatch: PathBuf,
+}
+
+/// Runs every benchmark `runs` times; `repo` holds `bench/programs`, `root` is an
+/// installed SDK root. `progress` is told when each round starts.
+pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path, runs: usize, mut progress: impl FnMut(usize)) -> Result<Report> {
+    let programs = repo.join("bench/programs");
+    let b = Built {
+        pingpong: build(&programs.join("pingpong"), work, root)?,
+        coldstart: build(&programs.join("coldstart"), work, root)?,
+        movelegs: build(&repo.join("testdata/programs/movelegs"), work, root)?,
+        jitter: build(&programs.join("sensorjitter"), work, root)?,
+        camwatch: build(&programs.join("camwatch"), work, root)?,
+    };
+    let mut report = Report::default();
+    for round in 0..runs.max(1) {
+        progress(round + 1);
+        one_round(exe, repo, root, work, &b, &mut report)?;
+    }
+    Ok(report)
+}
+
+fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, report: &mut Report) -> Result<()> {
+    let tab = &mut report.table;
+    let out = run_ms(exe, &b.pingpong, root)?;
+    let f = fields(&out, "BENCH pingpong");
+    let get = |k: &str| field(&f, k, &out);
+    tab.push(NOTIFY_P50, get("p50_ns")? / 1000.0, "µs", Some(RAW_P50));
+    tab.push(NOTIFY_P99, get("p99_ns")? / 1000.0, "µs", Some(RAW_P99));
+    tab.push(NOTIFY_RATE, get("msgs_per_sec")?, "msg/s", Some(RAW_RATE));
+    let (p50, p99, rate) = raw_ping_pong(20_000);
+    tab.push(RAW_P50, p50 / 1000.0, "µs", None);
+    tab.push(RAW_P99, p99 / 1000.0, "µs", None);
+    tab.push(RAW_RATE, rate, "msg/s", None);
+
+    let t0 = monotonic_ns();
+    let out = Command::new(exe).args(["run", "-q", "--for", "0.2s", "--sdk"]).arg(root).arg(&b.coldstart).output()?;
+    if !out.status.success() {
+        bail!("coldstart run failed: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let starts: Vec<f64> = fields(&stdout, "BENCH coldstart").into_iter().map(|(_, v)| v).collect();
+    if starts.len() != 10 {
+        bail!("expected 10 DoStart lines, got {}:\n{stdout}", starts.len());
+    }
+    let last = starts.iter().copied().fold(f64::MIN, f64::max);
+    tab.push("cold start to the 10th DoStart (10 objects, process spawn included)", (last - t0 as f64) / 1e6, "ms", None);
+
+    // Virtual time: the leg program of the corpus, 60 s of robot time at --speed max.
+    let t = Instant::now();
+    let out = Command::new(exe).args(["run", "-q", "--speed", "max", "--for", "60s", "--sdk"]).arg(root).arg(&b.movelegs).output()?;
+    if !out.status.success() {
+        bail!("movelegs at --speed max failed: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    tab.push("movelegs: virtual-time speed-up at --speed max (60 s of robot time)", 60.0 / t.elapsed().as_secs_f64(), "×", None);
+
+    // Real time: how regular the 32 ms sensor vectors arrive at an object.
+    let out = run_ms(exe, &b.jitter, root)?;
+    let f = fields(&out, "BENCH jitter");
+    let get = |k: &str| field(&f, k, &out);
+    tab.push("sensor period jitter |Δt − 32 ms| p50 (real time, 1000 vectors)", get("p50_ns")? / 1000.0, "µs", None);
+    tab.push("sensor period jitter |Δt − 32 ms| p99", get("p99_ns")? / 1000.0, "µs", None);
+
+    // Many robots: N runtimes at once, each with the camera at 30 fps and an object that
+    // reads every image and sensor vector, 10 s of robot time in real time.
+    let mut sweep = Vec::new();
+    let mut failed_in_a_row = 0;
+    for n in ROBOT_COUNTS {
+        let trial = robots_in_real_time(exe, &b.camwatch, root, n, 10)?;
+        tab.push(&format!("{n} ERS-7(s) with camera in real time: late frames"), trial.late_pct, "%", None);
+        tab.push(&format!("{n} ERS-7(s) with camera in real time: slowest robot's lag"), trial.lag_s, "s", None);
+        failed_in_a_row = if trial.passed() { 0 } else { failed_in_a_row + 1 };
+        sweep.push(trial);
+        if failed_in_a_row == 2 {
+            break;
+        }
+    }
+    let best = stats::largest_passing(&sweep);
+    tab.push(
+        &format!("ERS-7s with camera in real time (largest N with every N' ≤ N < {}% late, lag ≤ {} s)", stats::MAX_LATE_PCT, stats::MAX_LAG_S),
+        best as f64,
+        "robots",
+        None,
+    );
+    report.sweeps.push(sweep);
+    network::network(exe, repo, root, work, tab)
+}
