@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the host packages cargo-openr needs on Debian/Ubuntu (idempotent, quiet when
 # everything is already there). Used by the README commands and by CI:
-#   * the build: g++ gcc make binutils gzip, python3 (tests and the robot protocol peers);
+#   * the build: g++ gcc make binutils gzip, python3 (tests and the robot protocol peers),
+#     clangd (the compile database is checked with it);
 #   * the MuJoCo simulator (`cargo openr run --sim mujoco`): Mesa's headless GL (EGL and
 #     OSMesa) and mujoco==$MUJOCO_VERSION from PyPI in a venv at $MUJOCO_VENV
 #     (default ~/.cache/cargo-openr/mujoco-venv, where cargo-openr looks for it).
@@ -10,7 +11,7 @@ MUJOCO_VERSION=4.0.0  # keep in step with cargo-openr/src/ops/sim.rs MUJOCO_VERS
 VENV=${MUJOCO_VENV:-${XDG_CACHE_HOME:-$HOME/.cache}/cargo-openr/mujoco-venv}
 
 need=()
-for pkg_cmd in g++:g++ gcc:gcc make:make binutils:ar gzip:gzip python3:python3; do
+for pkg_cmd in g++:g++ gcc:gcc make:make binutils:ar gzip:gzip python3:python3 clangd:clangd; do
   pkg=${pkg_cmd%%:*}; cmd=${pkg_cmd##*:}
   command -v "$cmd" >/dev/null 2>&1 || need+=("$pkg")
 done

@@ -14,9 +14,16 @@ pub struct Args {
     /// The project directory (default: the current directory)
     #[arg(long, value_name = "DIR", default_value = ".")]
     path: PathBuf,
-    /// Build the Rust objects with `cargo build --release`
+    /// The release profile: C++ objects `-O2 -g`, Rust objects `cargo build --release`
+    /// (default: the dev profile, C++ `-O0 -g`)
     #[arg(long)]
     release: bool,
+    /// Extra C/C++ compiler flags, e.g. "-DDEBUG -Wall" (also OPENR_CXXFLAGS, openr.toml `cxxflags`)
+    #[arg(long, value_name = "FLAGS", allow_hyphen_values = true)]
+    cxxflags: Option<String>,
+    /// Extra link arguments for mkbin, e.g. "-lm" (also OPENR_LDFLAGS, openr.toml `ldflags`)
+    #[arg(long, value_name = "FLAGS", allow_hyphen_values = true)]
+    ldflags: Option<String>,
     /// Build only this object (its stub.cfg ObjectName or cargo package name); repeatable
     #[arg(short = 'p', long = "package", value_name = "OBJECT")]
     packages: Vec<String>,
@@ -29,10 +36,18 @@ pub struct Args {
 }
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
-    let cfg = config::resolve(&ConfigInputs { sdk: args.sdk, project: Some(args.path.clone()), ..Default::default() })?;
+    let inputs = ConfigInputs { sdk: args.sdk, cxxflags: args.cxxflags, ldflags: args.ldflags, project: Some(args.path.clone()), ..Default::default() };
+    let cfg = config::resolve(&inputs)?;
     let root = cfg.sdk.value;
     sdk::prepare(&root)?;
-    let opts = BuildOptions { dir: args.path.clone(), sdk: root, release: args.release, packages: args.packages };
+    let opts = BuildOptions {
+        dir: args.path.clone(),
+        sdk: root,
+        release: args.release,
+        cxxflags: cfg.cxxflags.value,
+        ldflags: cfg.ldflags.value,
+        packages: args.packages,
+    };
     let json = args.message_format == MessageFormat::Json;
     let mut emit = |e: Event| match (&e, json) {
         (Event::Compiling { object, kind }, false) => shell.status("Compiling", &format!("{object} ({})", kind.label())),
@@ -44,7 +59,12 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
             &json!({ "reason": "compiler-artifact", "package_id": object, "kind": kind.label(), "filenames": [bin], "fresh": fresh })
                 .to_string(),
         ),
-        (Event::Message { rendered, .. }, false) => eprint!("{rendered}"),
+        (Event::Message { rendered, .. }, false) => {
+            eprint!("{rendered}");
+            if !rendered.ends_with('\n') {
+                eprintln!();
+            }
+        }
         (Event::Message { object, level, rendered }, true) => shell.out(
             &json!({ "reason": "compiler-message", "package_id": object, "message": { "level": level, "rendered": rendered } })
                 .to_string(),

@@ -32,12 +32,14 @@ pub enum Format {
 }
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
-    let inputs = ConfigInputs { sdk: args.sdk, design: args.design, speed: args.speed, project: Some(args.project) };
+    let inputs = ConfigInputs { sdk: args.sdk, design: args.design, speed: args.speed, project: Some(args.project), ..Default::default() };
     let cfg = config::resolve(&inputs)?;
     let rows = [
         ("sdk", cfg.sdk.value.display().to_string(), cfg.sdk.source.to_string()),
         ("design", cfg.design.value.clone(), cfg.design.source.to_string()),
         ("speed", speed_text(cfg.speed.value), cfg.speed.source.to_string()),
+        ("cxxflags", cfg.cxxflags.value.join(" "), cfg.cxxflags.source.to_string()),
+        ("ldflags", cfg.ldflags.value.join(" "), cfg.ldflags.source.to_string()),
     ];
     match args.format {
         Format::Json => {
@@ -50,7 +52,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         }
         Format::Human => {
             for (k, v, s) in &rows {
-                shell.out(&format!("{k:<7} = {v:<50} # {s}"));
+                shell.out(&format!("{k:<8} = {v:<50} # {s}"));
             }
         }
     }

@@ -130,7 +130,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let world = check_sim_options(&args)?;
     let ms_dir = args.ms_dirs[0].clone();
     let project = ms_dir.parent().map(PathBuf::from);
-    let cfg = config::resolve(&ConfigInputs { sdk: args.sdk.clone(), design: args.design.clone(), speed: args.speed.clone(), project })?;
+    let cfg = config::resolve(&ConfigInputs { sdk: args.sdk.clone(), design: args.design.clone(), speed: args.speed.clone(), project, ..Default::default() })?;
     // The SDK root whose system objects this run loads, as `ops::config` resolves it
     // (`--sdk`, `$OPENRSDK_ROOT` when it is one of ours, `openr.toml`, the per-user default).
     let root = cfg.sdk.value;

@@ -32,6 +32,10 @@ pub struct BuildOptions {
     /// The SDK root (installed).
     pub sdk: PathBuf,
     pub release: bool,
+    /// Extra C/C++ compiler flags (after the profile's, before the include paths).
+    pub cxxflags: Vec<String>,
+    /// Extra link arguments given to `mkbin` after the objects.
+    pub ldflags: Vec<String>,
     /// Only these objects (by name), all when empty.
     pub packages: Vec<String>,
 }
@@ -186,6 +190,7 @@ pub fn build(opts: &BuildOptions, emit: &mut dyn FnMut(Event)) -> anyhow::Result
         };
         compiled += did as usize;
     }
+    write_clangd_config(&dir)?;
     let cc = serde_json::to_string_pretty(&commands)?;
     let cc_path = dir.join("compile_commands.json");
     if fs::read_to_string(&cc_path).ok().as_deref() != Some(cc.as_str()) {
@@ -239,7 +244,7 @@ fn build_cxx(
         .filter_map(|e| e.ok())
         .map(|e| e.path())
         .filter(|p| p.extension().is_some_and(|e| e == "cc" || e == "cpp" || e == "c"))
-        .filter(|p| !p.file_name().unwrap().to_string_lossy().ends_with("Stub.cc"))
+        .filter(|p| !is_generated(p))
         .collect();
     sources.sort();
     let ocf = [o.dir.clone(), o.dir.join("robot")]
@@ -249,7 +254,8 @@ fn build_cxx(
         .find(|p| p.extension().is_some_and(|e| e == "ocf"))
         .with_context(|| format!("object `{}`: no .ocf in {} or its robot/ directory", o.name, o.dir.display()))?;
 
-    let mut flags: Vec<String> = vec!["-O2".into(), "-g".into(), "-I.".into(), format!("-I{}", o.dir.display())];
+    let mut flags: Vec<String> = profile_flags(opts);
+    flags.extend(["-I.".into(), format!("-I{}", o.dir.display())]);
     flags.push(format!("-I{}", root.join("OPEN_R/include/R4000").display()));
     flags.push(format!("-I{}", root.join("OPEN_R/include").display()));
     if is_network(&sources, &o.dir) {
@@ -281,7 +287,7 @@ fn build_cxx(
         let mut args: Vec<String> = vec![cxx.display().to_string()];
         args.extend(flags.iter().cloned());
         args.extend(["-o".into(), obj.display().to_string(), "-c".into(), src.display().to_string()]);
-        commands.push(json!({ "directory": out, "arguments": args, "file": src, "output": obj }));
+        commands.push(json!({ "directory": out, "arguments": host_command(&args, src)?, "file": src, "output": obj }));
         let line = args.join("\u{1f}");
         let inputs: Vec<PathBuf> = dep_files(&dep).unwrap_or_else(|| vec![src.clone()]).iter().map(|p| out.join(p)).collect();
         let up_to_date = !stale(&obj, &inputs) && fs::read_to_string(&cmd_file).ok().as_deref() == Some(line.as_str());
@@ -315,7 +321,10 @@ fn build_cxx(
     link_inputs.push(ocf.clone());
     let installed = objs_dir.join(&o.bin);
     let mut fresh = true;
-    if stale(&bin, &link_inputs) {
+    // The extra link arguments are an input too: changing them alone relinks.
+    let link_stamp = out.join("link.cmd");
+    let link_line = opts.ldflags.join("\u{1f}");
+    if stale(&bin, &link_inputs) || fs::read_to_string(&link_stamp).ok().as_deref() != Some(link_line.as_str()) {
         announce(emit);
         fresh = false;
         // mkbin adds `-L<root>/OPEN_R/lib` and the OPEN-R archives (default_libs) itself.
@@ -325,12 +334,13 @@ fn build_cxx(
             prefix: None,
             ocf: Some(ocf.clone()),
             default_libs: true,
-            link_args: objs.iter().map(|p| p.clone().into_os_string()).collect(),
+            link_args: objs.iter().map(|p| p.clone().into_os_string()).chain(opts.ldflags.iter().map(Into::into)).collect(),
         };
         if let Err(e) = openr_wrappers::mkbin::link(&mk, root) {
             emit(Event::Message { object: o.name.clone(), level: "error", rendered: e.to_string() });
             bail!("could not link `{}` (C++)", o.name);
         }
+        fs::write(&link_stamp, &link_line)?;
     }
     if stale(&installed, std::slice::from_ref(&bin)) {
         fresh = false;
@@ -338,6 +348,58 @@ fn build_cxx(
     }
     emit(Event::Artifact { object: o.name.clone(), kind: Kind::Cxx, bin: installed, fresh });
     Ok(announced)
+}
+
+const CLANGD_MARKER: &str = "# Written by `cargo openr build`; delete this line to keep your own edits.";
+
+/// Errors that clang makes of what g++ `-fpermissive` (the wrapper's flag) accepts with a
+/// warning: without this `.clangd`, clangd marks LP64 `(int)pointer` casts of 2002-era
+/// ANT code as errors that the real build never has.
+const CLANGD_CONFIG: &str = "Diagnostics:\n  Suppress: [bad_reinterpret_cast_small_int, bad_cxx_cast_generic]\n";
+
+/// Writes the project's `.clangd` unless the user has one of their own.
+fn write_clangd_config(project: &Path) -> anyhow::Result<()> {
+    let path = project.join(".clangd");
+    let text = format!("{CLANGD_MARKER}\n{CLANGD_CONFIG}");
+    match fs::read_to_string(&path) {
+        Ok(old) if old == text || !old.starts_with(CLANGD_MARKER) => Ok(()),
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Ok(()),
+        _ => fs::write(&path, text).with_context(|| format!("cannot write {}", path.display())),
+    }
+}
+
+/// Files that `stubgen2` and `mkbin` write into an object's directory when the project is
+/// also built with its Makefile: compiling them again would define the stub and the ocf
+/// data twice ("multiple definition of `openr_ocf_name`").
+fn is_generated(src: &Path) -> bool {
+    let name = src.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    name.ends_with("Stub.cc") || name.ends_with(".snap.cc")
+}
+
+/// The profile's flags in front of the include paths: `dev` is cargo's dev (`-O0 -g`: every
+/// local visible in gdb), `--release` optimises and keeps debug info; then the user's extra
+/// `cxxflags` (from the command line, `OPENR_CXXFLAGS` or `openr.toml`).
+fn profile_flags(opts: &BuildOptions) -> Vec<String> {
+    let mut flags: Vec<String> = vec![if opts.release { "-O2" } else { "-O0" }.into(), "-g".into()];
+    flags.extend(opts.cxxflags.iter().cloned());
+    flags
+}
+
+/// The compile command as a tool that does not know our wrapper needs it (clangd, IDEs):
+/// the host compiler the wrapper runs, with every flag the wrapper adds in front, so that
+/// it parses for the host (x86-64) in gcc 3.3's dialect, not for a MIPS target.
+fn host_command(args: &[String], src: &Path) -> anyhow::Result<Vec<String>> {
+    let c = src.extension().is_some_and(|e| e == "c");
+    let (name, env, wrapper_flags) = if c {
+        ("gcc", "OPENR_HOST_CC", openr_wrappers::cc_flags())
+    } else {
+        ("g++", "OPENR_HOST_CXX", openr_wrappers::cxx_flags())
+    };
+    let host = openr_wrappers::host_tool(name, &[env]).map_err(|e| anyhow::anyhow!("{e}"))?;
+    let mut out = vec![host.display().to_string()];
+    out.extend(wrapper_flags.iter().map(|f| f.to_string()));
+    out.extend(args[1..].iter().cloned());
+    Ok(out)
 }
 
 /// Installs `from` gzipped as `to`, atomically (as the SDK root's `gzcp` does).

@@ -6,9 +6,12 @@
 //! | SDK root | `--sdk DIR` | `OPENRSDK_ROOT` (only a cargo-openr root) | `sdk = "DIR"` (relative to the file) | `~/.local/share/cargo-openr/OPEN_R_SDK` |
 //! | robot design | `--design NAME` | `OPENR_DESIGN` | `design = "ERS-7"` | `ERS-7` |
 //! | speed | `--speed F\|max` | `OPENR_SPEED` | `speed = 4` or `speed = "max"` | `1` |
+//! | extra C/C++ flags (`build`) | `--cxxflags "…"` | `OPENR_CXXFLAGS` | `cxxflags = "…"` | none |
+//! | extra link arguments (`build`) | `--ldflags "…"` | `OPENR_LDFLAGS` | `ldflags = "…"` | none |
 //!
 //! `openr.toml` sits beside the project's Makefile; it is looked for in the project
-//! directory and then in its parents. Only these three top-level keys are allowed.
+//! directory and then in its parents. Only these top-level keys are allowed. Flag lists are
+//! split at whitespace.
 use std::fmt;
 use std::path::{Path, PathBuf};
 
@@ -50,6 +53,8 @@ pub struct ConfigInputs {
     pub sdk: Option<PathBuf>,
     pub design: Option<String>,
     pub speed: Option<String>,
+    pub cxxflags: Option<String>,
+    pub ldflags: Option<String>,
     /// The project directory (where `openr.toml` is looked for, then its parents).
     pub project: Option<PathBuf>,
 }
@@ -60,6 +65,8 @@ pub struct Config {
     pub sdk: Setting<PathBuf>,
     pub design: Setting<String>,
     pub speed: Setting<Speed>,
+    pub cxxflags: Setting<Vec<String>>,
+    pub ldflags: Setting<Vec<String>>,
     /// The `openr.toml` read, if any.
     pub project_file: Option<PathBuf>,
 }
@@ -70,6 +77,8 @@ pub struct ProjectFile {
     pub sdk: Option<(String, usize)>,
     pub design: Option<(String, usize)>,
     pub speed: Option<(String, usize)>,
+    pub cxxflags: Option<(String, usize)>,
+    pub ldflags: Option<(String, usize)>,
 }
 
 /// Parses the subset of TOML `openr.toml` uses: `key = "string"` or `key = number`,
@@ -99,7 +108,9 @@ pub fn parse_project_file(path: &Path, text: &str) -> anyhow::Result<ProjectFile
             "sdk" => &mut out.sdk,
             "design" => &mut out.design,
             "speed" => &mut out.speed,
-            _ => return Err(err(format!("unknown key `{key}` (known: sdk, design, speed)"))),
+            "cxxflags" => &mut out.cxxflags,
+            "ldflags" => &mut out.ldflags,
+            _ => return Err(err(format!("unknown key `{key}` (known: sdk, design, speed, cxxflags, ldflags)"))),
         };
         if slot.is_some() {
             return Err(err(format!("`{key}` is set twice")));
@@ -180,7 +191,12 @@ pub fn resolve(inputs: &ConfigInputs) -> anyhow::Result<Config> {
         };
         anyhow::anyhow!("{at}{e}")
     })?;
+    let words = |(v, src): (String, Source)| Setting { value: v.split_whitespace().map(str::to_string).collect(), source: src };
+    let cxxflags = words(pick(&inputs.cxxflags, "--cxxflags", "OPENR_CXXFLAGS", &project.cxxflags, ""));
+    let ldflags = words(pick(&inputs.ldflags, "--ldflags", "OPENR_LDFLAGS", &project.ldflags, ""));
     Ok(Config {
+        cxxflags,
+        ldflags,
         sdk: Setting { value: std::path::absolute(&sdk.value).unwrap_or(sdk.value), source: sdk.source },
         design: Setting { value: design, source: design_src },
         speed: Setting { value: speed, source: speed_src },

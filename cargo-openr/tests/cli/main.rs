@@ -4,6 +4,7 @@ mod build;
 mod camera;
 mod clock;
 mod corpus;
+mod devloop;
 mod front;
 mod link;
 mod mujoco;
