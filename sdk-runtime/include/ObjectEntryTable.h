@@ -37,6 +37,10 @@ void Prologue(InitInfo* info);
 
 #endif
 
+#ifdef __cplusplus
+#define ENTRY_UNDEF ((Entry)::Prologue)
+#else
 #define ENTRY_UNDEF ((Entry)Prologue)
+#endif
 
 #endif /* _ObjectEntryTable_h_DEFINED */

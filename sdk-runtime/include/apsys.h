@@ -33,11 +33,24 @@ inline void openr_gen_entry_call(R (*f)(), void*)
     f();
 }
 
+/* Reports a C++ exception that escaped the entry `entry` of the calling object on
+   stderr (type, what()) and ends the object the way a crash does (abort). Call it only
+   from inside a catch handler. Implemented in libmcoopstub (prologue.cc). */
+extern "C" void openr_entry_exception(const char* entry) __attribute__((noreturn));
+
+/* Every name is qualified (::FUNNAME, ::openr_gen_entry_call): with `using namespace
+   std` in a header, an unqualified `_Destroy` or `_Construct` would also find
+   libstdc++'s std::_Destroy / std::_Construct and become an ambiguous overload set.
+   No exception may unwind out of an entry into the runtime's message loop. */
 #define GEN_ENTRY(ENTRYNAME, FUNNAME)                                        \
     extern "C" __attribute__((visibility("default"), used))                 \
     void ENTRYNAME(void* openr_entry_msg)                                    \
     {                                                                        \
-        openr_gen_entry_call(FUNNAME, openr_entry_msg);                      \
+        try {                                                                \
+            ::openr_gen_entry_call(::FUNNAME, openr_entry_msg);              \
+        } catch (...) {                                                      \
+            ::openr_entry_exception(#FUNNAME);                               \
+        }                                                                    \
     }                                                                        \
     extern "C" void ENTRYNAME(void* openr_entry_msg)
 

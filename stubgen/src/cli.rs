@@ -11,7 +11,8 @@ const USAGE: &str = "usage: stubgen2 <stub.cfg> [<more.cfg> ...]\n\
 /// Run `stubgen2` with `args` (file arguments only, no program name) in directory `cwd`.
 ///
 /// Relative file arguments are taken relative to `cwd`, and the outputs are written into
-/// `cwd`. On success the summary goes to `out` and the result is 0. On error
+/// `cwd`. On success the summary goes to `out`, warnings (if any) to `err`, and the
+/// result is 0. On error
 /// `stubgen2: <error>` goes to `err`, nothing is written, and the result is 1. Without
 /// arguments the usage goes to `err` and the result is 2; `-h`/`--help` as the only
 /// argument prints it on `out` and returns 0.
@@ -41,6 +42,9 @@ pub fn run_stubgen2(
         .and_then(|cfg| crate::generate::write_outputs(&cfg, cwd).map(|_| cfg));
     match result {
         Ok(cfg) => {
+            for w in crate::warn::warnings(&cfg) {
+                let _ = writeln!(err, "stubgen2: {w}");
+            }
             let _ = out.write_all(crate::generate::summary(&cfg).as_bytes());
             let _ = out.flush();
             0

@@ -26,8 +26,6 @@ pub enum ErrorKind {
     DuplicateExtra,
     /// The SubName (2nd part of a service name) is not made of C identifier characters.
     InvalidSubName,
-    /// The same SubName is used twice by services of the same kind.
-    DuplicateSubName,
     /// The service name contains characters that cannot go into a C string literal.
     InvalidServiceName,
     /// Declared subject count is 0, absent or not a number

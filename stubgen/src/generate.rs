@@ -25,6 +25,9 @@ struct ServiceCtx<'a> {
     sel1: u64,
     /// Selector of Ready (subject) / Notify (observer).
     sel2: u64,
+    /// Set when an earlier service of the same kind has the same SubName: how many do
+    /// (def.h then compiles this service's index constant under another name).
+    repeat: Option<usize>,
 }
 
 #[derive(Serialize)]
@@ -92,9 +95,11 @@ fn context(cfg: &StubCfg) -> Ctx<'_> {
 }
 
 fn services(list: &[Service], first1: u64, first2: u64) -> Vec<ServiceCtx<'_>> {
+    let repeats = crate::warn::repeats(list);
     list.iter()
         .enumerate()
         .map(|(i, svc)| ServiceCtx {
+            repeat: Some(repeats[i]).filter(|&n| n > 0),
             index: i,
             name: &svc.name,
             sub_name: &svc.sub_name,
@@ -137,7 +142,6 @@ pub(crate) fn validate(cfg: &StubCfg) -> Result<(), Error> {
         ));
     }
     for list in [&cfg.subjects, &cfg.observers] {
-        let mut seen = HashSet::new();
         for svc in list {
             let err = |kind, m: String| Error::at(kind, &svc.file, svc.line, m);
             if svc.sub_name.is_empty()
@@ -152,12 +156,6 @@ pub(crate) fn validate(cfg: &StubCfg) -> Result<(), Error> {
                         "SubName '{}' is not made of C identifier characters",
                         svc.sub_name
                     ),
-                ));
-            }
-            if !seen.insert(svc.sub_name.as_str()) {
-                return Err(err(
-                    ErrorKind::DuplicateSubName,
-                    format!("SubName '{}' is used twice", svc.sub_name),
                 ));
             }
             if svc

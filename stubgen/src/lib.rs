@@ -7,7 +7,8 @@
 //! entry point a selector and fill the `ObjectEntryTable` the runtime dispatches through.
 //!
 //! All checks happen before anything is written; errors read `<file>:<line>: <message>`
-//! and keep Sony's message texts where Sony had one.
+//! and keep Sony's message texts where Sony had one. What Sony's tool accepted but is
+//! dubious (a SubName used twice) is accepted too and reported by [`warnings`].
 //!
 //! ```
 //! let cfg = stubgen::parse_str("stub.cfg", "\
@@ -24,7 +25,7 @@
 //! let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
 //! assert_eq!(names, ["def.h", "entry.h", "SampleSubjectStub.h", "SampleSubjectStub.cc"]);
 //! assert!(files[0].1.contains("const int sbjSendString = 0;"));
-//! assert!(files[1].1.contains("const longword numOfBasicEntries = 8;"));
+//! assert!(files[1].1.contains("const ::longword numOfBasicEntries = 8;"));
 //! assert!(files[3].1.contains("StubFuncDefine_Ready(0, Ready)"));
 //! assert!(stubgen::summary(&cfg).starts_with("Object = SampleSubject\nnumOfSubject  = 1\n"));
 //!
@@ -39,8 +40,10 @@ mod cli;
 mod error;
 mod generate;
 mod parse;
+mod warn;
 
 pub use cli::run_stubgen2;
 pub use error::{Error, ErrorKind};
 pub use generate::{generate, output_names, summary, write_outputs};
 pub use parse::{parse_files, parse_str, Service, ServiceKind, StubCfg};
+pub use warn::{warnings, Warning};

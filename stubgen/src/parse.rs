@@ -332,18 +332,8 @@ fn parse_keyword_line<'a>(
                     ServiceKind::Subject => &mut st.subjects,
                     ServiceKind::Observer => &mut st.observers,
                 };
-                if let Some(prev) = list.iter().find(|s| s.sub_name == svc.sub_name) {
-                    return Err(loc.err(
-                        ErrorKind::DuplicateSubName,
-                        format!(
-                            "SubName '{}' already used by the {} service on {}:{}",
-                            svc.sub_name,
-                            kind_word(svc.kind),
-                            prev.file.display(),
-                            prev.line
-                        ),
-                    ));
-                }
+                // A SubName used twice is accepted, as Sony's tool did (see
+                // generate::warnings): projects patched the generated def.h themselves.
                 list.push(svc);
             }
         }
@@ -375,13 +365,6 @@ fn parse_keyword_line<'a>(
         }
     }
     Ok(())
-}
-
-fn kind_word(kind: ServiceKind) -> &'static str {
-    match kind {
-        ServiceKind::Subject => "subject",
-        ServiceKind::Observer => "observer",
-    }
 }
 
 /// A declared count, read like C's `atoi` on the first token (Sony's tool treats a

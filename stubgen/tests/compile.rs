@@ -303,3 +303,37 @@ fn stub_and_user_code_link_into_one_module() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
+
+/// The program's header is hostile to unqualified names: `using namespace std` (so
+/// `_Destroy` and `_Construct` also name libstdc++'s std::_Destroy/std::_Construct), a
+/// macro `Self`, globals named like the stub's locals. A SubName is used twice (Sony's
+/// tool accepted it). Stub and user code must still compile and link.
+#[test]
+fn stub_ignores_the_programs_names_and_repeated_subnames() {
+    let inc = include_dir();
+    let cfg = stubgen::parse_str(
+        "stub.cfg",
+        "ObjectName : Hostile\nNumOfOSubject : 1\nNumOfOObserver : 2\n\
+         Service : \"Hostile.Out.char.S\", null, Ready()\n\
+         Service : \"Hostile.Stdin.char.O\", Connect(), Notify()\n\
+         Service : \"Hostile.Stdin.int.O\", null, NotifyInt()\n\
+         Extra : Construct()\n",
+    )
+    .unwrap();
+    assert_eq!(stubgen::warnings(&cfg).len(), 1);
+    let dir = tempfile::tempdir().unwrap();
+    write_generated(&cfg, dir.path());
+    let hostile = "#include \"def.h\"\n#include <vector>\n#include <memory>\nusing namespace std;\n\
+                   static int entry, status, event, msg, openr_i;\n#define Self TheProgramsOwnSelf\n";
+    let header = class_header(&cfg).replacen("#include \"def.h\"\n", hostile, 1);
+    std::fs::write(dir.path().join("Hostile.h"), header).unwrap();
+    let source = class_source(&cfg) + "int use_indices() { return obsStdin + sbjOut + (int)entry + status + event + msg + openr_i; }\n";
+    std::fs::write(dir.path().join("Hostile.cc"), source).unwrap();
+    for unit in ["HostileStub", "Hostile"] {
+        let mut args = sdk_flags(&inc, dir.path());
+        args.extend(["-Werror=return-type".into(), "-c".into(), "-o".into(), format!("{unit}.o"), format!("{unit}.cc")]);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        gxx(dir.path(), &args).unwrap_or_else(|e| panic!("{e}"));
+    }
+    gxx(dir.path(), &["-shared", "-o", "module.so", "HostileStub.o", "Hostile.o"]).unwrap_or_else(|e| panic!("{e}"));
+}

@@ -32,12 +32,12 @@ fn objectcomm_sample_subject() {
     ));
     let entry = &f["entry.h"];
     assert!(entry.contains("const int numOfHook = 4;"));
-    assert!(entry.contains("const Selector Entry_Hook[numOfHook] = { 0, 1, 2, 3 };"));
-    assert!(entry.contains("const Selector Entry_Control[numOfSubject] = { 4 };"));
-    assert!(entry.contains("const Selector Entry_Ready[numOfSubject] = { 5 };"));
-    assert!(entry.contains("const Selector Entry_Connect[numOfObserver] = { 6 };"));
-    assert!(entry.contains("const Selector Entry_Notify[numOfObserver] = { 7 };"));
-    assert!(entry.contains("const longword numOfBasicEntries = 8;"));
+    assert!(entry.contains("const ::Selector Entry_Hook[numOfHook] = { 0, 1, 2, 3 };"));
+    assert!(entry.contains("const ::Selector Entry_Control[::numOfSubject] = { 4 };"));
+    assert!(entry.contains("const ::Selector Entry_Ready[::numOfSubject] = { 5 };"));
+    assert!(entry.contains("const ::Selector Entry_Connect[::numOfObserver] = { 6 };"));
+    assert!(entry.contains("const ::Selector Entry_Notify[::numOfObserver] = { 7 };"));
+    assert!(entry.contains("const ::longword numOfBasicEntries = 8;"));
     assert!(!entry.contains("Extra_Entry"));
     let cc = &f["SampleSubjectStub.cc"];
     assert!(has_lines(
@@ -58,7 +58,7 @@ fn objectcomm_sample_observer() {
     let (_, f) = generate_fixture("objectcomm-observer.cfg");
     assert!(f["def.h"].contains("const int sbjDummySubject = 0;"));
     assert!(f["def.h"].contains("const int obsReceiveString = 0;"));
-    assert!(f["entry.h"].contains("const longword numOfBasicEntries = 8;"));
+    assert!(f["entry.h"].contains("const ::longword numOfBasicEntries = 8;"));
     let cc = &f["SampleObserverStub.cc"];
     assert!(has_lines(
         cc,
@@ -77,11 +77,12 @@ fn moving_legs7() {
     let (_, f) = generate_fixture("movinglegs7.cfg");
     assert!(f["def.h"].contains("const int sbjMove = 0;"));
     assert!(f["def.h"].contains("const int obsDummyObserver = 0;"));
-    assert!(f["entry.h"].contains("const Selector Entry_Ready[numOfSubject] = { 5 };"));
+    assert!(f["entry.h"].contains("const ::Selector Entry_Ready[::numOfSubject] = { 5 };"));
     let cc = &f["MovingLegs7Stub.cc"];
     assert!(cc.contains("StubFuncDefine_Ready(0, Ready)"));
     assert_eq!(cc.matches("_nofunc(").count(), 3);
-    assert!(cc.contains("#include \"MovingLegs7.h\"\nMovingLegs7 Self;"));
+    assert!(cc.contains("#include \"MovingLegs7.h\"\n#ifdef Self\n#undef Self")
+        && cc.contains("#endif\n::MovingLegs7 Self;"));
 }
 
 #[test]
@@ -90,8 +91,8 @@ fn echo_server_four_extras() {
     let extras = ["ListenCont", "SendCont", "ReceiveCont", "CloseCont"];
     assert_eq!(cfg.extras, extras);
     let entry = &f["entry.h"];
-    assert!(entry.contains("const longword numOfBasicEntries = 8;"));
-    assert!(entry.contains("const Selector Extra_Entry[] = { 8, 9, 10, 11 };"));
+    assert!(entry.contains("const ::longword numOfBasicEntries = 8;"));
+    assert!(entry.contains("const ::Selector Extra_Entry[] = { 8, 9, 10, 11 };"));
     for (i, x) in extras.iter().enumerate() {
         assert!(entry.contains(&format!("const int entry{x} = {i};")), "{x}");
     }
@@ -102,10 +103,14 @@ fn echo_server_four_extras() {
             has_lines(
                 cc,
                 &[
-                    &format!("extern \"C\" void _{x}(void* msg)"),
+                    &format!("extern \"C\" void _{x}(void* openr_msg)"),
                     "{",
-                    &format!("Self.{x}(msg);"),
-                    "Return();",
+                    "try {",
+                    &format!("::Self.{x}(openr_msg);"),
+                    "} catch (...) {",
+                    &format!("::openr_entry_exception(\"{x}\");"),
+                    "}",
+                    "::Return();",
                     "}",
                 ]
             ),
@@ -122,7 +127,7 @@ fn tiny_ftpd_nine_extras_in_file_order() {
     let (cfg, f) = generate_fixture("tinyftpd.cfg");
     assert_eq!(cfg.extras.len(), 9);
     let entry = &f["entry.h"];
-    assert!(entry.contains("const Selector Extra_Entry[] = { 8, 9, 10, 11, 12, 13, 14, 15, 16 };"));
+    assert!(entry.contains("const ::Selector Extra_Entry[] = { 8, 9, 10, 11, 12, 13, 14, 15, 16 };"));
     assert!(entry.contains("const int entryListenContforPI = 0;"));
     assert!(entry.contains("const int entryCloseContforDTP = 8;"));
     let extras: Vec<&str> = cfg.extras.iter().map(String::as_str).collect();
@@ -153,11 +158,11 @@ fn monet_interleaved_three_subjects_two_observers() {
         assert!(def.contains(l), "{l}");
     }
     let entry = &f["entry.h"];
-    assert!(entry.contains("Entry_Control[numOfSubject] = { 4, 5, 6 };"));
-    assert!(entry.contains("Entry_Ready[numOfSubject] = { 7, 8, 9 };"));
-    assert!(entry.contains("Entry_Connect[numOfObserver] = { 10, 11 };"));
-    assert!(entry.contains("Entry_Notify[numOfObserver] = { 12, 13 };"));
-    assert!(entry.contains("const longword numOfBasicEntries = 14;"));
+    assert!(entry.contains("Entry_Control[::numOfSubject] = { 4, 5, 6 };"));
+    assert!(entry.contains("Entry_Ready[::numOfSubject] = { 7, 8, 9 };"));
+    assert!(entry.contains("Entry_Connect[::numOfObserver] = { 10, 11 };"));
+    assert!(entry.contains("Entry_Notify[::numOfObserver] = { 12, 13 };"));
+    assert!(entry.contains("const ::longword numOfBasicEntries = 14;"));
     let cc = &f["MoNetStub.cc"];
     assert!(cc.contains("StubFuncDefine_Notify(0, NotifyClientCommand)"));
     assert!(cc.contains("StubFuncDefine_Notify(1, NotifyAgentResult)"));
@@ -178,11 +183,11 @@ fn ball_tracking_head7_two_subjects_three_observers() {
         assert!(def.contains(l), "{l}");
     }
     let entry = &f["entry.h"];
-    assert!(entry.contains("Entry_Control[numOfSubject] = { 4, 5 };"));
-    assert!(entry.contains("Entry_Ready[numOfSubject] = { 6, 7 };"));
-    assert!(entry.contains("Entry_Connect[numOfObserver] = { 8, 9, 10 };"));
-    assert!(entry.contains("Entry_Notify[numOfObserver] = { 11, 12, 13 };"));
-    assert!(entry.contains("const longword numOfBasicEntries = 14;"));
+    assert!(entry.contains("Entry_Control[::numOfSubject] = { 4, 5 };"));
+    assert!(entry.contains("Entry_Ready[::numOfSubject] = { 6, 7 };"));
+    assert!(entry.contains("Entry_Connect[::numOfObserver] = { 8, 9, 10 };"));
+    assert!(entry.contains("Entry_Notify[::numOfObserver] = { 11, 12, 13 };"));
+    assert!(entry.contains("const ::longword numOfBasicEntries = 14;"));
     let cc = &f["BallTrackingHead7Stub.cc"];
     assert_eq!(cc.matches("StubFuncDefine_Notify(").count(), 3);
     assert!(cc.contains("StubFuncDefine_Notify(2, NotifyImage)"));
@@ -256,7 +261,7 @@ fn stub_cc_structure() {
     );
     assert!(has_lines(
         cc,
-        &["#include \"SampleSubject.h\"", "SampleSubject Self;"]
+        &["#include \"SampleSubject.h\"", "#ifdef Self", "#undef Self // a macro of the program's header must not rename the instance below", "#endif", "::SampleSubject Self;"]
     ));
     assert!(has_lines(
         cc,
@@ -283,8 +288,8 @@ fn stub_cc_structure() {
                 "GEN_ENTRY(_notifystub0, _Notify0);",
                 "GEN_ENTRY(PrologueEntry, Prologue);",
                 "",
-                "ObjectEntry ObjectEntryTable[] = {",
-                "{0, (Entry)_hookstub0},",
+                "::ObjectEntry ObjectEntryTable[] = {",
+                "{0, (::Entry)::_hookstub0},",
             ]
         ),
         "{cc}"
@@ -294,7 +299,7 @@ fn stub_cc_structure() {
     assert!(has_lines(
         cc,
         &[
-            "{UNDEF, (Entry) ENTRY_UNDEF}",
+            "{::UNDEF, ENTRY_UNDEF}",
             "};",
             "",
             "#else // !__GNUC__: entry points are the C functions themselves"

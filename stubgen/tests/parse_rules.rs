@@ -270,13 +270,36 @@ fn multiple_files_are_concatenated() {
 
 #[test]
 fn the_same_file_twice_duplicates_its_services() {
+    // Sony's tool concatenates: two services of each kind, but the count (last wins) is 1.
     let dir = tempfile::tempdir().unwrap();
     let a = dir.path().join("a.cfg");
     std::fs::write(&a, MIN).unwrap();
     let e = parse_files(&[a.clone(), a.clone()]).unwrap_err();
-    assert_eq!(e.kind(), ErrorKind::DuplicateSubName);
-    assert_eq!(e.line(), Some(4));
-    assert!(e.message().contains(&format!("{}:4", a.display())), "{e}");
+    assert_eq!(e.kind(), ErrorKind::SubjectCountMismatch);
+    assert!(e.message().contains("but 2 subject service(s) found"), "{e}");
+}
+
+#[test]
+fn a_subname_used_twice_is_accepted_with_a_warning() {
+    let text = "ObjectName : Obj
+NumOfOSubject : 1
+NumOfOObserver : 3
+Service : \"Obj.Sub.char.S\", null, null
+Service : \"Obj.Stdin.char.O\", null, Notify()
+Service : \"Obj.Other.char.O\", null, null
+Service : \"Obj.Stdin.OSensorFrameVectorData.O\", null, NotifySensor()
+";
+    let cfg = parse_str("stub.cfg", text).unwrap();
+    assert_eq!(cfg.observers.len(), 3);
+    let w = stubgen::warnings(&cfg);
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert_eq!((w[0].file.as_path(), w[0].line), (std::path::Path::new("stub.cfg"), 7));
+    let shown = w[0].to_string();
+    assert!(shown.starts_with("stub.cfg:7: warning: SubName 'Stdin' is already used by the observer service on stub.cfg:5;"), "{shown}");
+    assert!(shown.contains("'obsStdin' in def.h is 0"), "{shown}");
+    // A subject and an observer sharing a SubName give sbjX and obsX: nothing dubious.
+    let text = MIN.replace("Obj.Obs.char.O", "Obj.Sub.char.O");
+    assert!(stubgen::warnings(&parse_str("a", &text).unwrap()).is_empty());
 }
 
 #[test]

@@ -4,12 +4,19 @@
 // Everything here is in one translation unit on purpose: every stub refers to Prologue
 // (ENTRY_UNDEF, PrologueEntry) and to Exit or Return, so linking this member from
 // libmcoopstub.a also brings in the exported openr_make_* glue the loader requires.
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+#include <cxxabi.h>
+#include <exception>
+#include <typeinfo>
 
 #include <MCOOP.h>
 #include <ObjectEntryTable.h>
 #include <OPENR/OPENR.h>
 #include <OPENR/OPENRMessages.h>
+#include <apsys.h>
 
 #include "openr_host.h"
 
@@ -40,6 +47,36 @@ OPENR_EXPORT void Return(void* msg, size_t size)
 // Ends the current method without a reply; the runtime answers a call left unanswered.
 OPENR_EXPORT void Exit(void)
 {
+}
+
+// A C++ exception escaped an entry (apsys.h GEN_ENTRY, OPENR/stub_macro.h): say which
+// object, which entry, which exception, then abort() so the runtime's crash report
+// (backtrace, non-zero exit) follows, as for any other crash.  Called inside a handler.
+void openr_entry_exception(const char* entry)
+{
+    const openr_host_api* api = openr_host();
+    const char* object = api != 0 ? api->self_name() : "?";
+    std::type_info* type = abi::__cxa_current_exception_type();
+    int status = -1;
+    char* demangled = type != 0 ? abi::__cxa_demangle(type->name(), 0, 0, &status) : 0;
+    const char* type_name = demangled != 0 ? demangled : (type != 0 ? type->name() : "unknown type");
+    const char* what = 0;
+    try {
+        throw;
+    } catch (const std::exception& e) {
+        what = e.what();
+    } catch (...) {
+    }
+    fflush(stdout);
+    if (what != 0) {
+        fprintf(stderr, "error: object `%s`: uncaught C++ exception %s in %s: %s\n",
+                object, type_name, entry, what);
+    } else {
+        fprintf(stderr, "error: object `%s`: uncaught C++ exception %s in %s\n",
+                object, type_name, entry);
+    }
+    fflush(stderr);
+    abort();
 }
 
 /* ---- builders for the runtime ---- */

@@ -11,12 +11,19 @@
 #undef OPENR_DEBUG
 #endif
 
-#define PRINTF(x) (printf x)
+/* ::printf in C++: a member called printf cannot capture the macros */
+#ifdef __cplusplus
+#define OPENR_DEBUG_PRINTF ::printf
+#else
+#define OPENR_DEBUG_PRINTF printf
+#endif
+
+#define PRINTF(x) (OPENR_DEBUG_PRINTF x)
 
 #ifdef OPENR_DEBUG
 #define ODEBUG(x)       (x)
-#define DPRINTF(x)      (printf x)
-#define DPRINTF2(c, x)  ((c) ? (void)(printf x) : (void)0)
+#define DPRINTF(x)      (OPENR_DEBUG_PRINTF x)
+#define DPRINTF2(c, x)  ((c) ? (void)(OPENR_DEBUG_PRINTF x) : (void)0)
 #else
 #define ODEBUG(x)
 #define DPRINTF(x)

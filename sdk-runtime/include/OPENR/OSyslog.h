@@ -26,10 +26,11 @@ OStatus osyslog(OSyslogPriority priority, const char* fmt, ...)
 OStatus osysprint(const char* fmt, ...)
     __attribute__((format(printf, 1, 2)));
 
-#define OSYSPRINT(x) (osysprint x)
+/* qualified: a member or using-directive of the program cannot capture the call */
+#define OSYSPRINT(x) (::osysprint x)
 
 #ifdef OPENR_DEBUG
-#define OSYSDEBUG(x) (osysprint x)
+#define OSYSDEBUG(x) (::osysprint x)
 #else
 #define OSYSDEBUG(x)
 #endif
@@ -43,25 +44,25 @@ OStatus osysprint(const char* fmt, ...)
 #endif
 
 #if OSYSLOG_SHOW >= 1
-#define OSYSLOG1(x) (osyslog x)
+#define OSYSLOG1(x) (::osyslog x)
 #else
 #define OSYSLOG1(x)
 #endif
 
 #if OSYSLOG_SHOW >= 2
-#define OSYSLOG2(x) (osyslog x)
+#define OSYSLOG2(x) (::osyslog x)
 #else
 #define OSYSLOG2(x)
 #endif
 
 #if OSYSLOG_SHOW >= 3
-#define OSYSLOG3(x) (osyslog x)
+#define OSYSLOG3(x) (::osyslog x)
 #else
 #define OSYSLOG3(x)
 #endif
 
 #if OSYSLOG_SHOW >= 4
-#define OSYSLOG4(x) (osyslog x)
+#define OSYSLOG4(x) (::osyslog x)
 #else
 #define OSYSLOG4(x)
 #endif

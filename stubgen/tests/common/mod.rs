@@ -19,7 +19,7 @@ pub fn generate_fixture(name: &str) -> (StubCfg, BTreeMap<String, String>) {
     (cfg, files.into_iter().collect())
 }
 
-/// The rows `{selector, (Entry)name}` of the `__GNUC__` ObjectEntryTable, without the
+/// The rows `{selector, (::Entry)::name}` of the `__GNUC__` ObjectEntryTable, without the
 /// terminator.
 pub fn gnuc_table(stub_cc: &str) -> Vec<(u64, String)> {
     let gnuc = &stub_cc[stub_cc
@@ -32,7 +32,7 @@ pub fn gnuc_table(stub_cc: &str) -> Vec<(u64, String)> {
     let mut rows = Vec::new();
     for line in table.lines().skip(1) {
         let line = line.trim();
-        if line == "{UNDEF, (Entry) ENTRY_UNDEF}" {
+        if line == "{::UNDEF, ENTRY_UNDEF}" {
             return rows;
         }
         let inner = line
@@ -40,7 +40,7 @@ pub fn gnuc_table(stub_cc: &str) -> Vec<(u64, String)> {
             .and_then(|l| l.strip_suffix("},"))
             .unwrap_or_else(|| panic!("row {line:?}"));
         let (sel, entry) = inner
-            .split_once(", (Entry)")
+            .split_once(", (::Entry)::")
             .unwrap_or_else(|| panic!("row {line:?}"));
         rows.push((sel.parse().unwrap(), entry.to_owned()));
     }
