@@ -221,6 +221,53 @@ vis debug OPENR/ODebug.h '
 vis syslog OPENR/OSyslog.h '
     OSYSDEBUG(("%d", 1)); OSYSLOG4((osyslogINFO, "%d", 4)); OSYSLOG1((osyslogERROR, "x"));' \
     -DOPENR_DEBUG -DSYSMSGSHOW=1
+# newlib's C library surface through any OPEN-R header (openr_newlib.h), also next to
+# `using namespace std` and OPEN-R's byte
+for h in Types.h OPENR/OObject.h MCOOP.h; do
+vis "newlib_$(echo $h | tr '/.' '__')" "$h" '
+    using namespace std;
+    char s[16]; strcpy(s, "Ab"); strlwr(s); strupr(s); byte b = (byte)s[0];
+    if (stricmp(s, "ab") || strnicmp(s, "A", 1) || !strcmpi(s, "x") || strncmpi(s, "a", 1)) return 1;
+    char d[4]; strlcpy(d, s, sizeof d); strlcat(d, "c", sizeof d); bzero(d, 1); (void)index(s, 0);
+    char* dup = strdup(s); free(dup); (void)strsep(&dup, ","); (void)strcasecmp(s, d);
+    double x = sin(M_PI) + cos(M_PI_2) + sqrt(2.0) + fabs(-1.0) + tan(0.0) + atan2(1.0, 1.0)
+        + M_TWOPI + M_SQRT3 + floor(0.5) + pow(2.0, 3.0) + hypot(3.0, 4.0) + log(1.0) + exp(0.0);
+    double sn, cs; sincos(x, &sn, &cs);
+    if (isnan(x) || !finite(x) || isinf(x) || isnanf(1.0f)) return 2;
+    float f = atoff("1.5") + sinf(0.0f); int dp, sg; char buf[32]; ecvtbuf(1.5, 3, &dp, &sg, buf);
+    (void)gcvtf(f, 3, buf); (void)ecvtf(f, 2, &dp, &sg); (void)fcvtf(f, 2, &dp, &sg);
+    va_list* ap = 0; (void)ap; (void)b;
+    if (INT_MAX < 0 || errno == -1 || abs(-1) != 1 || rand() < 0) return 3;
+    qsort(s, 1, 1, 0);'
+done
+cat > "$WORK/newlib_link.cc" <<'EOF'
+#include <OPENR/OObject.h>
+int main()
+{
+    char s[16] = "MiXeD", d[4];
+    int dp, sg;
+    char b[32];
+    printf("%s|", strlwr(s));
+    printf("%s|", strupr(s));
+    printf("%d %d %d|", stricmp("abc", "ABC"), strnicmp("abX", "ABy", 2), strcmpi("a", "B") < 0);
+    printf("%d %s|", (int)strlcpy(d, "abcdef", sizeof d), d);
+    printf("%d %s|", (int)strlcat(d, "zz", sizeof d), d);
+    printf("%.2f %s ", atoff("2.25"), gcvtf(1.5f, 3, b));
+    ecvtbuf(3.14159, 3, &dp, &sg, b);
+    printf("%s %d\n", b, dp);
+    return 0;
+}
+EOF
+if run "newlib: link and run strlwr ... ecvtbuf from libOPENR's sources" "$CXX" "${CXXFLAGS[@]}" "${INCS[@]}" \
+        "$WORK/newlib_link.cc" "$HERE"/cxx/OPENR/newlib/*.cc -o "$WORK/newlib_link"; then
+    checks=$((checks + 1))
+    got=$("$WORK/newlib_link")
+    want='mixed|MIXED|0 0 1|6 abc|5 abc|2.25 1.5 314 1'
+    if [ "$got" != "$want" ]; then
+        failures=$((failures + 1))
+        echo "FAIL: newlib functions: got '$got', want '$want'"
+    fi
+fi
 
 # ---------------------------------------------------------------------------
 # 3. sample-shaped programs

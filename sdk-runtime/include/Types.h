@@ -14,13 +14,11 @@
 #include <sys/types.h>
 
 /*
- * Programs written for gcc 3.3 used printf/malloc/strcpy/isdigit ... without
- * including the C headers: make them visible through every OPEN-R header.
+ * Programs written for gcc 3.3 used printf/malloc/strcpy/isdigit/sin/stricmp ...
+ * without including the C headers: make the robot's C library surface (newlib's)
+ * visible through every OPEN-R header.
  */
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <ctype.h>
+#include <openr_newlib.h>
 
 #ifndef __cplusplus
 #include <stdbool.h>

@@ -176,3 +176,25 @@ fn write_failure_exits_1() {
     );
     assert_eq!(files_in(dir.path()), ["entry.h", "stub.cfg"]);
 }
+
+#[test]
+fn a_repeated_subname_is_a_warning_with_file_and_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = CFG.replace("SampleSubject.Other.char.S", "SampleSubject.SendString.int.S");
+    std::fs::write(dir.path().join("stub.cfg"), text).unwrap();
+    let (code, out, err) = run(&["stub.cfg"], dir.path());
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("Object = SampleSubject\n"), "{out}");
+    assert!(
+        err.starts_with("stubgen2: stub.cfg:6: warning: SubName 'SendString' is already used by the subject service on stub.cfg:4;"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+    // def.h keeps Sony's two definition lines; the second is compiled under another name.
+    let def = std::fs::read_to_string(dir.path().join("def.h")).unwrap();
+    assert!(def.contains("const int sbjSendString = 0;\n"), "{def}");
+    assert!(
+        def.contains("#define sbjSendString openr_repeated_sbjSendString_1\nconst int sbjSendString = 1;\n#undef sbjSendString\n"),
+        "{def}"
+    );
+}

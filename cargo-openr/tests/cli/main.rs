@@ -6,6 +6,7 @@ mod clock;
 mod corpus;
 mod devloop;
 mod front;
+mod legacy_c;
 mod link;
 mod mujoco;
 mod net;
