@@ -9,6 +9,9 @@ use crate::shell::Shell;
 #[derive(Debug, Parser)]
 #[command(name = "cargo openr", bin_name = "cargo openr", version, about = "Build and run Sony AIBO (OPEN-R) programs on a PC")]
 pub struct Cli {
+    /// Coloured output: auto (stderr is a terminal), always, never (also CARGO_TERM_COLOR)
+    #[arg(long, global = true, value_enum, value_name = "WHEN", env = "CARGO_TERM_COLOR", default_value = "auto")]
+    pub color: crate::shell::ColorChoice,
     #[command(subcommand)]
     pub command: Command,
 }
@@ -39,6 +42,7 @@ pub enum Command {
 
 pub fn run(args: Vec<OsString>, shell: &mut Shell) -> anyhow::Result<()> {
     let cli = Cli::try_parse_from(args).unwrap_or_else(|e| e.exit());
+    shell.set_color(cli.color);
     match cli.command {
         Command::Sdk(a) => commands::sdk::exec(a, shell),
         Command::Build(a) => commands::build::exec(a, shell),

@@ -1,14 +1,51 @@
 //! All human-facing output, cargo style: status lines right-aligned to 12 columns on
-//! stderr; machine-readable results on stdout.
-use std::io::Write;
+//! stderr; machine-readable results on stdout. Colour as cargo's: `--color
+//! auto|always|never` (or `CARGO_TERM_COLOR`), `auto` meaning "stderr is a terminal".
+use std::io::{IsTerminal, Write};
+
+/// `--color`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum ColorChoice {
+    #[default]
+    Auto,
+    Always,
+    Never,
+}
 
 pub struct Shell {
     quiet: bool,
+    color: bool,
 }
+
+const GREEN: &str = "\x1b[1;32m";
+const RED: &str = "\x1b[1;31m";
+const YELLOW: &str = "\x1b[1;33m";
+const RESET: &str = "\x1b[0m";
 
 impl Shell {
     pub fn new() -> Shell {
-        Shell { quiet: false }
+        Shell { quiet: false, color: false }
+    }
+
+    pub fn set_color(&mut self, choice: ColorChoice) {
+        self.color = match choice {
+            ColorChoice::Always => true,
+            ColorChoice::Never => false,
+            ColorChoice::Auto => std::io::stderr().is_terminal() && std::env::var_os("TERM").is_none_or(|t| t != "dumb"),
+        };
+    }
+
+    /// Whether stderr output is coloured (the compiler is asked for colour too).
+    pub fn color(&self) -> bool {
+        self.color
+    }
+
+    fn paint(&self, colour: &str, text: &str) -> String {
+        if self.color {
+            format!("{colour}{text}{RESET}")
+        } else {
+            text.to_string()
+        }
     }
 
     /// No status lines or warnings from now on (errors and stdout results still appear).
@@ -19,17 +56,18 @@ impl Shell {
     /// `   Installing OPEN-R SDK root` on stderr.
     pub fn status(&mut self, verb: &str, msg: &str) {
         if !self.quiet {
-            let _ = writeln!(std::io::stderr(), "{verb:>12} {msg}");
+            let verb = self.paint(GREEN, &format!("{verb:>12}"));
+            let _ = writeln!(std::io::stderr(), "{verb} {msg}");
         }
     }
 
     pub fn error(&mut self, msg: &str) {
-        let _ = writeln!(std::io::stderr(), "error: {msg}");
+        let _ = writeln!(std::io::stderr(), "{}: {msg}", self.paint(RED, "error"));
     }
 
     pub fn warn(&mut self, msg: &str) {
         if !self.quiet {
-            let _ = writeln!(std::io::stderr(), "warning: {msg}");
+            let _ = writeln!(std::io::stderr(), "{}: {msg}", self.paint(YELLOW, "warning"));
         }
     }
 

@@ -6,6 +6,7 @@ use serde_json::json;
 use crate::ops::build::{self, BuildOptions, Event};
 use crate::ops::config::{self, ConfigInputs};
 use crate::ops::diag::MessageFormat;
+use crate::ops::gcc_diag;
 use crate::ops::sdk;
 use crate::shell::Shell;
 
@@ -47,6 +48,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         cxxflags: cfg.cxxflags.value,
         ldflags: cfg.ldflags.value,
         packages: args.packages,
+        color: shell.color() && args.message_format != MessageFormat::Json,
     };
     let json = args.message_format == MessageFormat::Json;
     let mut emit = |e: Event| match (&e, json) {
@@ -65,10 +67,12 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
                 eprintln!();
             }
         }
-        (Event::Message { object, level, rendered }, true) => shell.out(
-            &json!({ "reason": "compiler-message", "package_id": object, "message": { "level": level, "rendered": rendered } })
-                .to_string(),
-        ),
+        (Event::Message { object, level, rendered }, true) => {
+            // One record per diagnostic, in cargo's shape (spans, code, children).
+            for m in gcc_diag::parse(rendered, level) {
+                shell.out(&json!({ "reason": "compiler-message", "package_id": object, "message": m }).to_string());
+            }
+        }
     };
     let result = build::build(&opts, &mut emit);
     let ok = result.is_ok();

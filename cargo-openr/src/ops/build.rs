@@ -36,6 +36,9 @@ pub struct BuildOptions {
     pub cxxflags: Vec<String>,
     /// Extra link arguments given to `mkbin` after the objects.
     pub ldflags: Vec<String>,
+    /// Ask the compiler for coloured diagnostics (`-fdiagnostics-color=always`; not part
+    /// of the recorded command line, so switching it rebuilds nothing).
+    pub color: bool,
     /// Only these objects (by name), all when empty.
     pub packages: Vec<String>,
 }
@@ -298,6 +301,7 @@ fn build_cxx(
         announce(emit);
         let result = Command::new(&args[0])
             .args(&args[1..])
+            .args(opts.color.then_some("-fdiagnostics-color=always"))
             .args(["-MMD", "-MF"])
             .arg(&dep)
             .current_dir(&out)

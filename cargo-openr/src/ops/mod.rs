@@ -6,6 +6,7 @@ pub mod config;
 pub mod diag;
 pub mod doctor;
 pub mod env;
+pub mod gcc_diag;
 pub mod new;
 pub mod sdk;
 pub mod sim;

@@ -116,3 +116,41 @@ fn clangd_checks_every_unit_of_the_compile_database_with_no_error() {
         }
     }
 }
+
+#[test]
+fn json_compiler_messages_carry_spans_and_colour_follows_color() {
+    let (_tmp, dir) = program("legacy");
+    let src = dir.join("Legacy/Legacy.cc");
+    let text_before = fs::read_to_string(&src).unwrap();
+    // An unused variable (a warning with its -W option) and a call of an undeclared
+    // function (an error) at known lines at the end of the unit.
+    let lines = text_before.lines().count();
+    fs::write(&src, format!("{text_before}\nstatic int warned() {{ int unused_x; return 0; }}\nstatic void broken() {{ no_such_function(1); }}\n")).unwrap();
+    let (warn_line, err_line) = (lines as u64 + 2, lines as u64 + 3);
+    let out = cargo_openr_in(&dir, &["build", "--sdk", sdk_root().to_str().unwrap(), "--message-format", "json", "--cxxflags", "-Wall"], &[]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    let records: Vec<serde_json::Value> = String::from_utf8_lossy(&out.stdout).lines().map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{l}: {e}"))).collect();
+    let messages: Vec<&serde_json::Value> = records.iter().filter(|r| r["reason"] == "compiler-message").map(|r| &r["message"]).collect();
+    let error = messages.iter().find(|m| m["level"] == "error" && m["message"].as_str().unwrap().contains("no_such_function")).unwrap_or_else(|| panic!("{messages:#?}"));
+    let span = &error["spans"][0];
+    assert!(span["file_name"].as_str().unwrap().ends_with("Legacy.cc"), "{span}");
+    assert_eq!(span["line_start"], err_line, "{span}");
+    assert!(span["column_start"].as_u64().unwrap() > 1, "{span}");
+    assert!(error["rendered"].as_str().unwrap().contains("no_such_function(1)"), "the source excerpt: {error}");
+    let warning = messages.iter().find(|m| m["level"] == "warning" && m["message"].as_str().unwrap().contains("unused_x")).unwrap_or_else(|| panic!("{messages:#?}"));
+    assert_eq!(warning["code"]["code"], "-Wunused-variable", "{warning}");
+    assert_eq!(warning["spans"][0]["line_start"], warn_line, "{warning}");
+    assert!(!String::from_utf8_lossy(&out.stdout).contains('\x1b'), "no colour in JSON");
+    assert_eq!(records.last().unwrap()["reason"], "build-finished");
+
+    // --color always: cargo's green status verbs and gcc's own colours; never: none.
+    let out = cargo_openr_in(&dir, &["--color", "always", "build", "--sdk", sdk_root().to_str().unwrap()], &[]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("\x1b[1;32m   Compiling\x1b[0m"), "{err}");
+    assert!(err.contains("\x1b[1;31merror\x1b[0m: could not compile"), "{err}");
+    assert!(err.matches('\x1b').count() > 4, "gcc's colours pass through: {err}");
+    let out = cargo_openr_in(&dir, &["build", "--color", "never", "--sdk", sdk_root().to_str().unwrap()], &[("CARGO_TERM_COLOR", "always")]);
+    assert!(!String::from_utf8_lossy(&out.stderr).contains('\x1b'), "{}", text(&out));
+    let out = cargo_openr_in(&dir, &["build", "--sdk", sdk_root().to_str().unwrap()], &[("CARGO_TERM_COLOR", "always")]);
+    assert!(String::from_utf8_lossy(&out.stderr).contains('\x1b'), "{}", text(&out));
+}
