@@ -1415,6 +1415,55 @@ EOF
 run "Legacy: compile Legacy.cc" "$CXX" "${CXXFLAGS[@]}" "${ASMFLAG[@]}" -c -I"$d" "${INCS[@]}" \
     "$d/Legacy.cc" -o "$d/Legacy.o"
 
+# A hand-written stub (HelloWorld shape) under `using namespace std`, with a stub function
+# called _Destroy like libstdc++'s std::_Destroy: GEN_ENTRY must still resolve it, and a
+# C++ exception thrown by DoStart must stop at the entry (report, then abort), not unwind
+# into the caller.
+cat > "$WORK/throw_stub.cc" <<'EOF'
+#include <MCOOP.h>
+#include <ObjectEntryTable.h>
+#include <apsys.h>
+#include <OPENR/OObject.h>
+#include <stdexcept>
+#include <vector>
+using namespace std;
+class Thrower : public OObject {
+public:
+    virtual OStatus DoStart(const OSystemEvent&) { throw runtime_error("boom"); }
+};
+Thrower Self;
+extern "C" void StartStub(OReasonMessage* msg)
+{ OSystemEvent event(msg->reason, msg->param, msg->paramSize); Self.Start(event); Return(); }
+extern "C" void _Destroy(OReasonMessage* msg)
+{ OSystemEvent event(msg->reason, msg->param, msg->paramSize); Self.Destroy(event); Return(); }
+GEN_ENTRY(StartEntry, StartStub);
+GEN_ENTRY(DestroyEntry, _Destroy);
+GEN_ENTRY(PrologueEntry, Prologue);
+ObjectEntry ObjectEntryTable[] = {
+    {oentrySTART, (Entry)StartEntry}, {oentryDESTROY, (Entry)DestroyEntry}, {UNDEF, (Entry) ENTRY_UNDEF}
+};
+int main()
+{
+    OReasonMessage m(oreasonBOOT);
+    try { StartEntry(&m); } catch (...) { printf("exception escaped the entry\n"); }
+    return 0;
+}
+EOF
+if run "entry exceptions: hand-written stub with _Destroy under using namespace std" "$CXX" "${CXXFLAGS[@]}" \
+        -I"$HERE/cxx" "${INCS[@]}" "$WORK/throw_stub.cc" "$HERE/cxx/mcoopstub/prologue.cc" \
+        "$HERE/cxx/mcoopstub/host.cc" "$HERE/cxx/mcoopstub/mcoop.cc" "$HERE/cxx/OPENR/OObject.cc" \
+        -ldl -o "$WORK/throw_stub"; then
+    checks=$((checks + 1))
+    "$WORK/throw_stub" > "$WORK/throw_stub.out" 2>&1
+    rc=$?
+    want='uncaught C++ exception std::runtime_error in StartStub: boom'
+    if [ $rc -ne 134 ] || ! grep -qF "$want" "$WORK/throw_stub.out"; then
+        failures=$((failures + 1))
+        echo "FAIL: entry exceptions: exit $rc (want 134, SIGABRT), output:"
+        sed 's/^/  | /' "$WORK/throw_stub.out"
+    fi
+fi
+
 # --- 3g. the header-size facts that data files and samples depend on --------
 d="$S/Layout"; mkdir -p "$d"
 cat > "$d/layout.cc" <<'EOF'
