@@ -35,7 +35,9 @@ unsafe impl Sync for Module {}
 
 const UNDEF: u32 = 0xffff_ffff;
 
-/// Reads a `.BIN`: gzip or plain ELF. Errors name the file and say what it is instead.
+/// Reads a `.BIN`: gzip or plain ELF, checked by [`crate::elf_check::validate`] so that a
+/// damaged file is an error naming it rather than a signal inside `dlopen`. Errors name
+/// the file and say what it is instead.
 pub fn read_bin(path: &Path) -> Result<Vec<u8>> {
     let raw = std::fs::read(path).map_err(|e| Error::io(path, e))?;
     let elf = gunzip_if_gzip(raw).map_err(|e| Error::load(path, format!("corrupt gzip data: {e}")))?;
@@ -43,6 +45,7 @@ pub fn read_bin(path: &Path) -> Result<Vec<u8>> {
         let what = if elf.is_empty() { "an empty file".to_string() } else { format!("starts with {:02x?}", &elf[..elf.len().min(4)]) };
         return Err(Error::load(path, format!("not an OPEN-R object: expected a gzipped or plain ELF shared object, found {what}")));
     }
+    crate::elf_check::validate(path, &elf)?;
     Ok(elf)
 }
 
@@ -69,7 +72,7 @@ impl Module {
         if handle.is_null() {
             let err = dlerror();
             let prefix = format!("{}: ", so_path.display());
-            let msg = err.strip_prefix(&prefix).unwrap_or(&err).to_string();
+            let msg = crate::demangle::annotate(err.strip_prefix(&prefix).unwrap_or(&err));
             return Err(Error::load(bin, format!("cannot load: {msg}")));
         }
         let sym = |name: &str| -> Option<*mut c_void> {

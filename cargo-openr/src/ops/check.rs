@@ -231,24 +231,39 @@ fn check_objects(ms: &MsDir, design: &str, shown: &dyn Fn(&Path) -> PathBuf, rep
             );
             continue;
         }
+        if let Some(problems) = load_problems(&host, &elf) {
+            report.push(
+                Diagnostic::error("E0003", format!("`{ms_path}` ({}) would not load: {problems}", shown(&host).display()))
+                    .at(&file, Some(line.number))
+                    .help("every symbol an object uses must be defined by it, its archives, the OPEN-R libraries or the C/C++ runtime: rebuild it with this SDK root's mkbin, which reports such symbols when linking"),
+            );
+            continue;
+        }
         out.push((shown(&host), services_in_rodata(&elf)));
     }
     out
 }
 
-/// Why an ELF image is not an object the runtime can load, if it is not.
+/// Test-loads `elf` the way `run` will (sdk_runtime::link_check: the system's dynamic
+/// loader binds every symbol, in a child, running none of the object's code); the
+/// problems, joined, if any.
+fn load_problems(host: &Path, elf: &[u8]) -> Option<String> {
+    let problems = tempfile::Builder::new()
+        .suffix(".so")
+        .tempfile()
+        .and_then(|mut f| std::io::Write::write_all(&mut f, elf).map(|()| f))
+        .map_err(|e| format!("cannot write a copy to test-load: {e}"))
+        .and_then(|f| sdk_runtime::link_check::load_problems(host, f.path()).map_err(|e| e.to_string()));
+    match problems {
+        Ok(p) if p.is_empty() => None,
+        Ok(p) => Some(p.join("; ")),
+        Err(e) => Some(e),
+    }
+}
+
+/// Why an ELF image (already checked by `read_bin`'s validation) is not an OPEN-R object
+/// the runtime can start, if it is not.
 fn object_problem(path: &Path, elf: &[u8]) -> Option<String> {
-    use object::Object;
-    let file = match object::File::parse(elf) {
-        Ok(f) => f,
-        Err(e) => return Some(format!("not an ELF file: {e}")),
-    };
-    if file.architecture() != object::Architecture::X86_64 {
-        return Some(format!("built for {:?}, not x86-64 (was it built with the host SDK root?)", file.architecture()));
-    }
-    if file.kind() != object::ObjectKind::Dynamic {
-        return Some(format!("an ELF {:?} file, not a shared object", file.kind()));
-    }
     match openr_wrappers::mkbin::missing_dynamic_symbols_in(path, elf, openr_wrappers::mkbin::ENTRY_SYMBOLS) {
         Ok(missing) if missing.is_empty() => None,
         Ok(missing) => Some(format!("{} missing from the dynamic symbol table", missing.join(", "))),

@@ -8,6 +8,7 @@ mod devloop;
 mod front;
 mod legacy_c;
 mod link;
+mod load;
 mod mujoco;
 mod net;
 mod peer;
