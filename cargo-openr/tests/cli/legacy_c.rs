@@ -124,3 +124,17 @@ fn an_exception_escaping_do_start_is_reported_and_fails_the_run() {
     assert_lines(&out, "Calib :", &["Calib : loading /MS/OPEN-R/MW/DATA/P/CALIB.DAT", "Calib : offsets 1.5 -2.0 0.5"]);
     assert!(!out.stderr.contains("uncaught"), "{}", out.stderr);
 }
+
+#[test]
+fn an_exception_escaping_a_notify_function_names_it() {
+    let p = build("throw-notify");
+    let out = run_ms(&p.ms(), &RUN);
+    assert_ne!(out.code, Some(0), "stdout:\n{}\nstderr:\n{}", out.stdout, out.stderr);
+    assert!(out.stdout.contains("SampleObserver::Notify() !!! Hello world !!! (length 19)"), "the first string is handled:\n{}", out.stdout);
+    assert!(
+        out.stderr.contains("error: object `sampleObserver`: uncaught C++ exception std::out_of_range in Notify: vector::_M_range_check"),
+        "{}",
+        out.stderr
+    );
+    assert!(out.stderr.contains("crashed with SIGABRT"), "{}", out.stderr);
+}
