@@ -451,11 +451,29 @@ fn build_rust(opts: &BuildOptions, project: &Path, o: &Object, objs_dir: &Path, 
     let stamp = format!("{}\n{:?}\n", so.display(), mtime(&so));
     let fresh = !stale(&installed, std::slice::from_ref(&so)) && fs::read_to_string(&stamp_path).ok().as_deref() == Some(stamp.as_str());
     if !fresh {
+        check_rust_symbols(o, &so, emit)?;
         gzip(&so, &installed)?;
         fs::write(&stamp_path, &stamp)?;
     }
     emit(Event::Artifact { object: o.name.clone(), kind: Kind::Rust, bin: installed, fresh: fresh && !compiled });
     Ok(compiled)
+}
+
+/// rustc links a cdylib even when an `extern "C"` function is defined nowhere (no
+/// `-z defs`, which mkbin gives C++ objects); the system's dynamic loader, asked as
+/// `check` asks it, finds such symbols before the `.BIN` is installed.
+fn check_rust_symbols(o: &Object, so: &Path, emit: &mut dyn FnMut(Event)) -> anyhow::Result<()> {
+    let problems = sdk_runtime::link_check::load_problems(so, so).map_err(|e| anyhow::anyhow!("{e}"))?;
+    if problems.is_empty() {
+        return Ok(());
+    }
+    let mut rendered = format!("{}: the cdylib would not load:", so.display());
+    for p in &problems {
+        rendered.push_str(&format!("\n  {p}"));
+    }
+    rendered.push_str("\n  hint: an `extern \"C\"` function must be defined by the crate, a library it links (`#[link(name = …)]`, a build script) or the C runtime; check its name");
+    emit(Event::Message { object: o.name.clone(), level: "error", rendered });
+    bail!("could not link `{}` (Rust)", o.name);
 }
 
 #[cfg(test)]

@@ -87,3 +87,50 @@ fn mkbin_rejects_bad_ocf_bytes_words_and_sizes_with_file_and_line() {
     assert!(!ok && log.contains("mkbin: x.ocf:2: ocf format error: STACK `18446744073709551615K` is too large"), "{log}");
     assert_eq!(files_in(d.path()), ["x.ocf"], "nothing written for a bad ocf");
 }
+
+/// A call the Rust object declares `extern "C"` and nobody defines.
+const RUST_MISSING: &str = r#"
+extern "C" {
+    fn missing_helper(step: i32) -> i32;
+}
+
+#[no_mangle]
+pub extern "C" fn uses_missing_helper() -> i32 {
+    unsafe { missing_helper(1) }
+}
+"#;
+
+#[test]
+fn cargo_openr_build_refuses_a_rust_object_with_an_undefined_extern() {
+    let tmp = tempfile::tempdir().unwrap();
+    // Named apart from build.rs's `test-dog`: both share the Rust target directory.
+    let out = cargo_openr_in(tmp.path(), &["new", "helper-dog", "--template", "rust-object"], &[]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let dir = tmp.path().join("helper-dog");
+    let lib = dir.join("HelperDogSubject/src/lib.rs");
+    let original = fs::read_to_string(&lib).unwrap_or_else(|e| panic!("{}: {e}", lib.display()));
+    fs::write(&lib, format!("{original}{RUST_MISSING}")).unwrap();
+    let root = sdk_root().to_str().unwrap().to_string();
+    let target = Path::new(env!("CARGO_TARGET_TMPDIR")).join("build-rust-objects");
+    let env = [("CARGO_TARGET_DIR", target.to_str().unwrap())];
+    let out = cargo_openr_in(&dir, &["build", "--sdk", &root, "--message-format", "json"], &env);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(!out.status.success(), "{stdout}");
+    let msg = stdout
+        .lines()
+        .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
+        .filter_map(|v| v["message"]["rendered"].as_str().map(str::to_string))
+        .find(|r| r.contains("undefined symbol missing_helper"))
+        .unwrap_or_else(|| panic!("no message names missing_helper:\n{stdout}"));
+    assert!(msg.contains("the cdylib would not load") && msg.contains("hint:"), "{msg}");
+    // The template's Cargo.toml names it `bin = "HELPERDS.BIN"`.
+    let toml = fs::read_to_string(dir.join("HelperDogSubject/Cargo.toml")).unwrap();
+    assert!(toml.contains("bin = \"HELPERDS.BIN\""), "{toml}");
+    let bin = dir.join("MS/OPEN-R/MW/OBJS/HELPERDS.BIN");
+    assert!(!bin.exists(), "the Rust object was installed");
+
+    fs::write(&lib, original).unwrap();
+    let out = cargo_openr_in(&dir, &["build", "--sdk", &root], &env);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(bin.is_file(), "installed once the extern is gone");
+}
