@@ -19,6 +19,9 @@ pub struct Args {
     /// (default: the dev profile, C++ `-O0 -g`)
     #[arg(long)]
     release: bool,
+    /// Compiler and linker processes at once (default: the number of cores)
+    #[arg(short = 'j', long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    jobs: Option<u32>,
     /// Extra C/C++ compiler flags, e.g. "-DDEBUG -Wall" (also OPENR_CXXFLAGS, openr.toml `cxxflags`)
     #[arg(long, value_name = "FLAGS", allow_hyphen_values = true)]
     cxxflags: Option<String>,
@@ -48,6 +51,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         cxxflags: cfg.cxxflags.value,
         ldflags: cfg.ldflags.value,
         packages: args.packages,
+        jobs: args.jobs.map_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()), |j| j as usize),
         color: shell.color() && args.message_format != MessageFormat::Json,
     };
     let json = args.message_format == MessageFormat::Json;

@@ -154,3 +154,30 @@ fn json_compiler_messages_carry_spans_and_colour_follows_color() {
     let out = cargo_openr_in(&dir, &["build", "--sdk", sdk_root().to_str().unwrap()], &[("CARGO_TERM_COLOR", "always")]);
     assert!(String::from_utf8_lossy(&out.stderr).contains('\x1b'), "{}", text(&out));
 }
+
+/// A clean `cargo openr build` with `-j N`: its JSON lines and the installed `.BIN`s.
+fn clean_build_json(dir: &Path, jobs: &str) -> (String, Vec<(String, u64)>) {
+    let _ = fs::remove_dir_all(dir.join("target"));
+    let objs = dir.join("MS/OPEN-R/MW/OBJS");
+    let _ = fs::remove_dir_all(&objs);
+    let out = openr_build(dir, &["-j", jobs, "--message-format", "json"], &[]);
+    let mut bins: Vec<(String, u64)> = fs::read_dir(&objs).unwrap().map(|e| e.unwrap()).map(|e| (e.file_name().to_string_lossy().into_owned(), e.metadata().unwrap().len())).collect();
+    bins.sort();
+    (String::from_utf8_lossy(&out.stdout).into_owned(), bins)
+}
+
+#[test]
+fn parallel_builds_give_the_same_output_in_the_same_order() {
+    let (_tmp, dir) = program("blinkleds");
+    let (one, bins_one) = clean_build_json(&dir, "1");
+    let (many, bins_many) = clean_build_json(&dir, "8");
+    assert!(bins_one.len() >= 3, "{bins_one:?}");
+    assert_eq!(one, many, "-j 1 and -j 8 print the same records in the same order");
+    assert_eq!(bins_one.iter().map(|b| &b.0).collect::<Vec<_>>(), bins_many.iter().map(|b| &b.0).collect::<Vec<_>>());
+    let r = run_ms(&dir.join("MS"), &["--for", "1s", "--speed", "max", "--sdk", sdk_root().to_str().unwrap()]);
+    assert_eq!(r.code, Some(0), "{}\n{}", r.stdout, r.stderr);
+
+    // -j 0 is refused by the parser, not taken as "no limit".
+    let out = cargo_openr_in(&dir, &["build", "-j", "0", "--sdk", sdk_root().to_str().unwrap()], &[]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+}

@@ -15,14 +15,18 @@
 //!
 //! Work products go to `target/openr/<object>/` of the project. A C++ object is rebuilt
 //! only when a source, one of the headers its `-MMD` `.d` file lists, its flags, its
-//! stub.cfg or its `.ocf` changed; `compile_commands.json` is written at the project root.
+//! stub.cfg or its `.ocf` changed; `compile_commands.json` is written at the project root
+//! ([`compile_db`]). The C++ units of all objects compile on one pool of `-j` processes,
+//! then the objects link on it ([`cxx`]); events come out in object order regardless.
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Instant, SystemTime};
 
 use anyhow::{bail, Context};
-use serde_json::json;
+
+mod compile_db;
+mod cxx;
 
 /// What to build.
 #[derive(Debug, Clone)]
@@ -39,6 +43,8 @@ pub struct BuildOptions {
     /// Ask the compiler for coloured diagnostics (`-fdiagnostics-color=always`; not part
     /// of the recorded command line, so switching it rebuilds nothing).
     pub color: bool,
+    /// At most this many compiler or linker processes at once (`-j`).
+    pub jobs: usize,
     /// Only these objects (by name), all when empty.
     pub packages: Vec<String>,
 }
@@ -185,19 +191,12 @@ pub fn build(opts: &BuildOptions, emit: &mut dyn FnMut(Event)) -> anyhow::Result
     let objs_dir = dir.join("MS/OPEN-R/MW/OBJS");
     fs::create_dir_all(&objs_dir).with_context(|| format!("cannot create {}", objs_dir.display()))?;
     let mut commands = Vec::new();
-    let mut compiled = 0;
-    for o in &objects {
-        let did = match o.kind {
-            Kind::Cxx => build_cxx(opts, &dir, o, &objs_dir, &mut commands, emit)?,
-            Kind::Rust => build_rust(opts, &dir, o, &objs_dir, emit)?,
-        };
-        compiled += did as usize;
-    }
-    write_clangd_config(&dir)?;
-    let cc = serde_json::to_string_pretty(&commands)?;
-    let cc_path = dir.join("compile_commands.json");
-    if fs::read_to_string(&cc_path).ok().as_deref() != Some(cc.as_str()) {
-        fs::write(&cc_path, cc).with_context(|| format!("cannot write {}", cc_path.display()))?;
+    let plans = objects.iter().filter(|o| o.kind == Kind::Cxx).map(|o| cxx::plan(opts, &dir, o, &mut commands)).collect::<anyhow::Result<Vec<_>>>()?;
+    compile_db::write(&dir, &commands)?;
+    let mut compiled = cxx::build_all(opts, &plans, &objs_dir, emit)?;
+    // cargo schedules a Rust object's crates in parallel itself.
+    for o in objects.iter().filter(|o| o.kind == Kind::Rust) {
+        compiled += build_rust(opts, &dir, o, &objs_dir, emit)? as usize;
     }
     Ok(BuildReport { objects: objects.len(), compiled, elapsed: start.elapsed() })
 }
@@ -219,191 +218,6 @@ fn dep_files(d: &Path) -> Option<Vec<PathBuf>> {
     let joined = rest.replace("\\\n", " ");
     let first = joined.lines().next().unwrap_or("");
     Some(first.split_whitespace().map(PathBuf::from).collect())
-}
-
-fn is_network(sources: &[PathBuf], dir: &Path) -> bool {
-    let mut files = sources.to_vec();
-    if let Ok(rd) = fs::read_dir(dir) {
-        files.extend(rd.filter_map(|e| e.ok()).map(|e| e.path()).filter(|p| p.extension().is_some_and(|e| e == "h")));
-    }
-    files.iter().any(|f| fs::read_to_string(f).is_ok_and(|t| t.contains("<ant.h>") || t.contains("EndpointTypes.h") || t.contains("<MCOOP")))
-}
-
-fn build_cxx(
-    opts: &BuildOptions,
-    project: &Path,
-    o: &Object,
-    objs_dir: &Path,
-    commands: &mut Vec<serde_json::Value>,
-    emit: &mut dyn FnMut(Event),
-) -> anyhow::Result<bool> {
-    let out = project.join("target/openr").join(&o.name);
-    fs::create_dir_all(&out).with_context(|| format!("cannot create {}", out.display()))?;
-    let root = &opts.sdk;
-    let cxx = root.join("bin/mipsel-linux-g++");
-    let stub_cfg = o.dir.join("stub.cfg");
-    let stub_cc = out.join(format!("{}Stub.cc", o.name));
-    let mut sources: Vec<PathBuf> = fs::read_dir(&o.dir)?
-        .filter_map(|e| e.ok())
-        .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|e| e == "cc" || e == "cpp" || e == "c"))
-        .filter(|p| !is_generated(p))
-        .collect();
-    sources.sort();
-    let ocf = [o.dir.clone(), o.dir.join("robot")]
-        .iter()
-        .filter_map(|d| fs::read_dir(d).ok())
-        .flat_map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path()))
-        .find(|p| p.extension().is_some_and(|e| e == "ocf"))
-        .with_context(|| format!("object `{}`: no .ocf in {} or its robot/ directory", o.name, o.dir.display()))?;
-
-    let mut flags: Vec<String> = profile_flags(opts);
-    flags.extend(["-I.".into(), format!("-I{}", o.dir.display())]);
-    flags.push(format!("-I{}", root.join("OPEN_R/include/R4000").display()));
-    flags.push(format!("-I{}", root.join("OPEN_R/include").display()));
-    if is_network(&sources, &o.dir) {
-        flags.push(format!("-I{}", root.join("OPEN_R/include/MCOOP").display()));
-    }
-
-    let mut announced = false;
-    let mut announce = |emit: &mut dyn FnMut(Event)| {
-        if !announced {
-            announced = true;
-            emit(Event::Compiling { object: o.name.clone(), kind: Kind::Cxx });
-        }
-    };
-
-    if stale(&stub_cc, std::slice::from_ref(&stub_cfg)) {
-        announce(emit);
-        let cfg = stubgen::parse_files(std::slice::from_ref(&stub_cfg)).map_err(|e| anyhow::anyhow!("{e}"))?;
-        stubgen::write_outputs(&cfg, &out).map_err(|e| anyhow::anyhow!("{e}"))?;
-    }
-
-    let mut all = vec![stub_cc.clone()];
-    all.extend(sources.iter().cloned());
-    let mut objs = Vec::new();
-    for src in &all {
-        let stem = src.file_stem().unwrap().to_string_lossy().into_owned();
-        let obj = out.join(format!("{stem}.o"));
-        let dep = out.join(format!("{stem}.d"));
-        let cmd_file = out.join(format!("{stem}.cmd"));
-        let mut args: Vec<String> = vec![cxx.display().to_string()];
-        args.extend(flags.iter().cloned());
-        args.extend(["-o".into(), obj.display().to_string(), "-c".into(), src.display().to_string()]);
-        commands.push(json!({ "directory": out, "arguments": host_command(&args, src)?, "file": src, "output": obj }));
-        let line = args.join("\u{1f}");
-        let inputs: Vec<PathBuf> = dep_files(&dep).unwrap_or_else(|| vec![src.clone()]).iter().map(|p| out.join(p)).collect();
-        let up_to_date = !stale(&obj, &inputs) && fs::read_to_string(&cmd_file).ok().as_deref() == Some(line.as_str());
-        objs.push(obj.clone());
-        if up_to_date {
-            continue;
-        }
-        announce(emit);
-        let result = Command::new(&args[0])
-            .args(&args[1..])
-            .args(opts.color.then_some("-fdiagnostics-color=always"))
-            .args(["-MMD", "-MF"])
-            .arg(&dep)
-            .current_dir(&out)
-            .output()
-            .with_context(|| format!("cannot run {}", cxx.display()))?;
-        let text = String::from_utf8_lossy(&result.stderr).into_owned();
-        if !result.status.success() {
-            let _ = fs::remove_file(&obj);
-            emit(Event::Message { object: o.name.clone(), level: "error", rendered: text });
-            bail!("could not compile `{}` (C++): {} failed", o.name, src.display());
-        }
-        if !text.trim().is_empty() {
-            emit(Event::Message { object: o.name.clone(), level: "warning", rendered: text });
-        }
-        fs::write(&cmd_file, &line)?;
-    }
-
-    let target = ocf.file_stem().unwrap().to_string_lossy().into_owned();
-    let bin = out.join(format!("{target}.bin"));
-    let mut link_inputs = objs.clone();
-    link_inputs.push(ocf.clone());
-    let installed = objs_dir.join(&o.bin);
-    let mut fresh = true;
-    // The extra link arguments are an input too: changing them alone relinks.
-    let link_stamp = out.join("link.cmd");
-    let link_line = opts.ldflags.join("\u{1f}");
-    if stale(&bin, &link_inputs) || fs::read_to_string(&link_stamp).ok().as_deref() != Some(link_line.as_str()) {
-        announce(emit);
-        fresh = false;
-        // mkbin adds `-L<root>/OPEN_R/lib` and the OPEN-R archives (default_libs) itself.
-        let mk = openr_wrappers::mkbin::Options {
-            verbose: false,
-            output: Some(bin.clone()),
-            prefix: None,
-            ocf: Some(ocf.clone()),
-            default_libs: true,
-            link_args: objs.iter().map(|p| p.clone().into_os_string()).chain(opts.ldflags.iter().map(Into::into)).collect(),
-        };
-        if let Err(e) = openr_wrappers::mkbin::link(&mk, root) {
-            emit(Event::Message { object: o.name.clone(), level: "error", rendered: e.to_string() });
-            bail!("could not link `{}` (C++)", o.name);
-        }
-        fs::write(&link_stamp, &link_line)?;
-    }
-    if stale(&installed, std::slice::from_ref(&bin)) {
-        fresh = false;
-        gzip(&bin, &installed)?;
-    }
-    emit(Event::Artifact { object: o.name.clone(), kind: Kind::Cxx, bin: installed, fresh });
-    Ok(announced)
-}
-
-const CLANGD_MARKER: &str = "# Written by `cargo openr build`; delete this line to keep your own edits.";
-
-/// Errors that clang makes of what g++ `-fpermissive` (the wrapper's flag) accepts with a
-/// warning: without this `.clangd`, clangd marks LP64 `(int)pointer` casts of 2002-era
-/// ANT code as errors that the real build never has.
-const CLANGD_CONFIG: &str = "Diagnostics:\n  Suppress: [bad_reinterpret_cast_small_int, bad_cxx_cast_generic]\n";
-
-/// Writes the project's `.clangd` unless the user has one of their own.
-fn write_clangd_config(project: &Path) -> anyhow::Result<()> {
-    let path = project.join(".clangd");
-    let text = format!("{CLANGD_MARKER}\n{CLANGD_CONFIG}");
-    match fs::read_to_string(&path) {
-        Ok(old) if old == text || !old.starts_with(CLANGD_MARKER) => Ok(()),
-        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Ok(()),
-        _ => fs::write(&path, text).with_context(|| format!("cannot write {}", path.display())),
-    }
-}
-
-/// Files that `stubgen2` and `mkbin` write into an object's directory when the project is
-/// also built with its Makefile: compiling them again would define the stub and the ocf
-/// data twice ("multiple definition of `openr_ocf_name`").
-fn is_generated(src: &Path) -> bool {
-    let name = src.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    name.ends_with("Stub.cc") || name.ends_with(".snap.cc")
-}
-
-/// The profile's flags in front of the include paths: `dev` is cargo's dev (`-O0 -g`: every
-/// local visible in gdb), `--release` optimises and keeps debug info; then the user's extra
-/// `cxxflags` (from the command line, `OPENR_CXXFLAGS` or `openr.toml`).
-fn profile_flags(opts: &BuildOptions) -> Vec<String> {
-    let mut flags: Vec<String> = vec![if opts.release { "-O2" } else { "-O0" }.into(), "-g".into()];
-    flags.extend(opts.cxxflags.iter().cloned());
-    flags
-}
-
-/// The compile command as a tool that does not know our wrapper needs it (clangd, IDEs):
-/// the host compiler the wrapper runs, with every flag the wrapper adds in front, so that
-/// it parses for the host (x86-64) in gcc 3.3's dialect, not for a MIPS target.
-fn host_command(args: &[String], src: &Path) -> anyhow::Result<Vec<String>> {
-    let c = src.extension().is_some_and(|e| e == "c");
-    let (name, env, wrapper_flags) = if c {
-        ("gcc", "OPENR_HOST_CC", openr_wrappers::cc_flags())
-    } else {
-        ("g++", "OPENR_HOST_CXX", openr_wrappers::cxx_flags())
-    };
-    let host = openr_wrappers::host_tool(name, &[env]).map_err(|e| anyhow::anyhow!("{e}"))?;
-    let mut out = vec![host.display().to_string()];
-    out.extend(wrapper_flags.iter().map(|f| f.to_string()));
-    out.extend(args[1..].iter().cloned());
-    Ok(out)
 }
 
 /// Installs `from` gzipped as `to`, atomically (as the SDK root's `gzcp` does).
