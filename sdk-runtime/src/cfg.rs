@@ -44,7 +44,8 @@ pub struct CfgFile {
 impl CfgFile {
     /// Reads `/MS/OPEN-R/MW/CONF/<name>` (any case). `None` if it does not exist.
     pub fn find(ms: &MsDir, name: &str) -> Result<Option<CfgFile>> {
-        let Some(path) = ms.existing(&format!("/MS/OPEN-R/MW/CONF/{name}")) else { return Ok(None) };
+        // The base tree's comment-only CFGs never stand in for the program's own.
+        let Some(path) = ms.existing_in_program(&format!("/MS/OPEN-R/MW/CONF/{name}")) else { return Ok(None) };
         let bytes = std::fs::read(&path).map_err(|e| Error::io(&path, e))?;
         let text = String::from_utf8_lossy(&bytes).into_owned();
         Ok(Some(CfgFile { path, text }))

@@ -146,7 +146,7 @@ unsafe extern "C" fn map_path(path: *const c_char, create: i32, out: *mut c_char
         set_errno(libc::ENOENT);
         return -1;
     };
-    match rt.ms.resolve(path, create != 0) {
+    match rt.ms.resolve(path, if create != 0 { crate::ms::Access::Write } else { crate::ms::Access::Read }) {
         Ok(host) => {
             let b = host.as_os_str().as_encoded_bytes();
             if b.len() + 1 > len {

@@ -26,7 +26,7 @@ mod elf_dynamic;
 pub mod error;
 pub mod host_api;
 pub mod idle;
-mod interpose;
+pub mod interpose;
 pub mod link_check;
 pub mod loader;
 pub mod ms;

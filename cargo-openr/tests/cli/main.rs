@@ -3,6 +3,7 @@ mod audio;
 mod build;
 mod camera;
 mod clock;
+mod confine;
 mod corpus;
 mod devloop;
 mod front;
