@@ -138,13 +138,12 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         vectors: Mutex::new(Vec::new()),
     });
 
-    let scratch = tempdir()?;
     for (i, (path, image)) in opts.system_objects.iter().zip(system_images).enumerate() {
         let label = format!("/SYSTEM/OBJS/{}", path.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned()));
-        load_object(rt, FIRST_SYSTEM_OID + i, &label, path, image, &scratch.0)?;
+        load_object(rt, FIRST_SYSTEM_OID + i, &label, path, image)?;
     }
     for (i, (entry, image)) in objects.iter().zip(images).enumerate() {
-        load_object(rt, FIRST_OID + i, &entry.ms_path, &entry.host_path, image, &scratch.0)
+        load_object(rt, FIRST_OID + i, &entry.ms_path, &entry.host_path, image)
             .map_err(|e| with_cfg_line(e, &object_cfg_path, entry.line))?;
     }
     let all = rt.all_objects();
@@ -202,22 +201,6 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     Ok(Outcome { ended, frames: load(&rt.vr.frames), late_frames: load(&rt.vr.late_frames) })
 }
 
-/// A scratch directory for the run's extracted objects, removed when dropped.
-struct Scratch(PathBuf);
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
-fn tempdir() -> Result<Scratch> {
-    let base = std::env::var_os("TMPDIR").map(PathBuf::from).unwrap_or_else(|| "/tmp".into());
-    let dir = base.join(format!("cargo-openr-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
-    Ok(Scratch(dir))
-}
-
 fn with_cfg_line(e: Error, cfg: &std::path::Path, line: usize) -> Error {
     match e.kind() {
         ErrorKind::Load { .. } => Error::config(cfg, Some(line), e.to_string()),
@@ -227,7 +210,7 @@ fn with_cfg_line(e: Error, cfg: &std::path::Path, line: usize) -> Error {
 
 /// Starts the object's thread, which loads the module (static constructors run there)
 /// and then serves messages.
-fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path::Path, image: Vec<u8>, scratch: &std::path::Path) -> Result<()> {
+fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path::Path, image: Vec<u8>) -> Result<()> {
     let (tx, rx) = mpsc::channel();
     let index = rt.objects.read().unwrap_or_else(|p| p.into_inner()).len();
     let slot = Arc::new(ObjectSlot {
@@ -243,14 +226,14 @@ fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path
     rt.objects.write().unwrap_or_else(|p| p.into_inner()).push(slot.clone());
     let (done_tx, done_rx) = mpsc::sync_channel::<Result<()>>(1);
     let thread_name: String = host.file_stem().map_or("object".into(), |s| s.to_string_lossy().into_owned());
-    let (host, scratch) = (host.to_path_buf(), scratch.to_path_buf());
+    let host = host.to_path_buf();
     let worker = slot.clone();
     std::thread::Builder::new()
         .name(thread_name)
         .spawn(move || {
             object::set_current(worker.clone());
             crate::crash::alt_stack();
-            match Module::load(&host, &image, &scratch, index) {
+            match Module::load(&host, &image, index) {
                 Ok(m) => {
                     let _ = worker.module.set(m);
                     name_thread(worker.name());

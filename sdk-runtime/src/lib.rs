@@ -37,6 +37,7 @@ pub mod power;
 pub mod robot_api;
 pub mod robot;
 pub mod runtime;
+mod scratch;
 pub mod shm;
 mod signals;
 pub mod timers;

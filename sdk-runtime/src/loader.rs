@@ -1,5 +1,6 @@
-//! Loading one `.BIN` (object-model 1.5, 5.6): gunzip (or take plain ELF), write it to
-//! the run's scratch directory (so gdb and backtraces find the symbols), `dlopen` it
+//! Loading one `.BIN` (object-model 1.5, 5.6): gunzip (or take plain ELF), put it where
+//! `dlopen` can open it by a path (see `scratch`: gdb and backtraces find the symbols
+//! there, and nothing is left behind), `dlopen` it
 //! with `RTLD_LOCAL` — mkbin links with `-Bsymbolic`, so each object binds its own
 //! `Self`, `ObjectEntryTable`, `_Init` … while `std::cout` stays the process's one — and
 //! read its entry table.
@@ -61,14 +62,13 @@ pub fn gunzip_if_gzip(raw: Vec<u8>) -> std::io::Result<Vec<u8>> {
 }
 
 impl Module {
-    /// Loads `bin` (its ELF image already read) via `scratch/<stem>-<index>.so`. Static
+    /// Loads `bin` (its ELF image already read) as `<index>-<stem>.so`. Static
     /// constructors (the object's `Self`) run here, on the calling thread.
-    pub fn load(bin: &Path, elf: &[u8], scratch: &Path, index: usize) -> Result<Module> {
+    pub fn load(bin: &Path, elf: &[u8], index: usize) -> Result<Module> {
         let stem = bin.file_stem().map_or("object".into(), |s| s.to_string_lossy().into_owned());
-        let so_path = scratch.join(format!("{index:02}-{stem}.so"));
-        std::fs::write(&so_path, elf).map_err(|e| Error::io(&so_path, e))?;
-        let c = CString::new(so_path.as_os_str().as_encoded_bytes()).map_err(|_| Error::load(bin, "path contains NUL"))?;
-        let handle = unsafe { libc::dlopen(c.as_ptr(), libc::RTLD_NOW | libc::RTLD_LOCAL) };
+        let name = format!("{index:02}-{stem}.so");
+        let (handle, so_path) = crate::scratch::dlopen_image(&name, elf, libc::RTLD_NOW | libc::RTLD_LOCAL)
+            .map_err(|e| Error::load(bin, format!("cannot place its image for loading: {e}")))?;
         if handle.is_null() {
             let err = dlerror();
             let prefix = format!("{}: ", so_path.display());

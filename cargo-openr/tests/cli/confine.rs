@@ -106,3 +106,93 @@ fn the_runtime_exports_every_interposer() {
     let missing = openr_wrappers::mkbin::missing_dynamic_symbols(exe, sdk_runtime::interpose::SYMBOLS).unwrap();
     assert!(missing.is_empty(), "not in the dynamic symbol table of cargo-openr: {missing:?}");
 }
+
+// ---- the images of the objects (issue 18.3) ----
+
+/// `cargo openr run <ms> --for 1s` with `TMPDIR=tmp` (and objects loaded through files
+/// when `files`): (exit code, stderr).
+fn run_with_tmpdir(ms: &Path, tmp: &Path, files: bool) -> (Option<i32>, String) {
+    let mut cmd = std::process::Command::new(crate::support::exe());
+    cmd.env("OPENRSDK_ROOT", crate::support::sdk_root()).env("TMPDIR", tmp).env_remove("OPENR_SCRATCH_FILES");
+    if files {
+        cmd.env("OPENR_SCRATCH_FILES", "1");
+    }
+    let mut child = cmd
+        .args(["run", "--for", "1s", "--speed", "max"])
+        .arg(ms)
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    let status = loop {
+        if let Some(st) = child.try_wait().unwrap() {
+            break st;
+        }
+        if start.elapsed() > std::time::Duration::from_secs(60) {
+            let _ = child.kill();
+            panic!("cargo openr run {} hung for 60 s", ms.display());
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    };
+    let mut err = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+    (status.code(), err)
+}
+
+fn entries(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn loading_follows_no_link_planted_in_tmpdir_and_leaves_nothing() {
+    let p = build("hello");
+    let tmp = tempfile::tempdir().unwrap();
+    let victim = tempfile::tempdir().unwrap();
+    fs::write(victim.path().join("KEEP"), "victim").unwrap();
+    // The old scratch path was $TMPDIR/cargo-openr-<pid>: plant it for the next pids.
+    let last: u32 = fs::read_to_string("/proc/sys/kernel/ns_last_pid").unwrap().trim().parse().unwrap();
+    for pid in last + 1..last + 2000 {
+        symlink(victim.path(), tmp.path().join(format!("cargo-openr-{pid}"))).unwrap();
+    }
+    let planted = entries(tmp.path());
+    for files in [false, true] {
+        let (code, err) = run_with_tmpdir(&p.ms(), tmp.path(), files);
+        assert_eq!(code, Some(0), "files={files}: {err}");
+        assert_eq!(entries(victim.path()), ["KEEP"], "files={files}: written through a planted link");
+        assert_eq!(fs::read_to_string(victim.path().join("KEEP")).unwrap(), "victim");
+        assert_eq!(entries(tmp.path()), planted, "files={files}: the run left something in TMPDIR");
+    }
+}
+
+#[test]
+fn a_crashing_run_leaves_no_scratch_directory() {
+    let p = build("crash");
+    fs::write(p.ms().join("OPEN-R/MW/CONF/CRASH.CFG"), "1\n").unwrap();
+    for files in [false, true] {
+        let tmp = tempfile::tempdir().unwrap();
+        let (code, err) = run_with_tmpdir(&p.ms(), tmp.path(), files);
+        assert_ne!(code, Some(0), "files={files}: the crash fails the run: {err}");
+        assert!(err.contains("error: object `crash`"), "files={files}: {err}");
+        assert_eq!(entries(tmp.path()), Vec::<String>::new(), "files={files}: left behind in TMPDIR");
+    }
+}
+
+#[test]
+fn loading_through_files_needs_a_usable_tmpdir_and_says_so() {
+    let p = build("hello");
+    let tmp = tempfile::tempdir().unwrap();
+    let missing = tmp.path().join("NO-SUCH-DIR");
+    let (code, err) = run_with_tmpdir(&p.ms(), &missing, true);
+    assert_ne!(code, Some(0));
+    // The system objects load first.
+    assert!(err.contains("VRCOMM.BIN: cannot place its image for loading: cannot make a private directory in"), "{err}");
+    assert!(err.contains("NO-SUCH-DIR: No such file or directory"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    // From memory (the default) no directory is needed at all.
+    let (code, err) = run_with_tmpdir(&p.ms(), &missing, false);
+    assert_eq!(code, Some(0), "{err}");
+}
