@@ -57,12 +57,20 @@ pub(crate) fn run(lang: Lang, args: Vec<OsString>) -> Result<i32, Error> {
         Lang::C => ("OPENR_HOST_CC", "gcc"),
     };
     let exe = host_tool(default, &[env])?;
-    // stderr is read so that errors gcc 3.3 did not make get an explanation; everything
-    // else (stdout, exit status) is the host compiler's own.
-    let mut cmd = Command::new(exe);
-    cmd.args(host_flags(lang, &args)).args(args).stderr(Stdio::piped());
+    // stderr is read so that errors gcc 3.3 did not make get repaired or explained;
+    // everything else (stdout, exit status) is the host compiler's own.
+    let host = host_flags(lang, &args);
+    let mut cmd = Command::new(&exe);
+    cmd.args(&host).args(&args).stderr(Stdio::piped());
     let out = cmd.spawn().and_then(|c| c.wait_with_output()).map_err(|e| Error::io(PathBuf::from(cmd.get_program()), e))?;
     let stderr = String::from_utf8_lossy(&out.stderr);
+    if !out.status.success() {
+        // Only a failed compile pays for the legacy repair (repair/mod.rs).
+        if let Some(repaired) = crate::repair::attempt(&exe, &host, &args, &stderr) {
+            eprint!("{}", repaired.stderr);
+            return Ok(repaired.code);
+        }
+    }
     eprint!("{stderr}");
     if !out.status.success() {
         let cwd = std::env::current_dir().unwrap_or_default();

@@ -1,6 +1,7 @@
-//! What `-fpermissive` cannot make g++ 12 accept from gcc-3.3-era code (legacy-code 1):
-//! the compiler's error stays as it is, and a `note:` line with the same file:line says
-//! why it compiled on the robot toolchain and what to change.
+//! What `-fpermissive` cannot make g++ 12 accept from gcc-3.3-era code (legacy-code 1),
+//! when the legacy repair (repair/mod.rs) could not make the whole unit compile: the
+//! compiler's error stays as it is, and a `note:` line with the same file:line says why it
+//! compiled on the robot toolchain and what to change.
 use std::collections::HashMap;
 use std::path::Path;
 
@@ -11,12 +12,12 @@ pub fn notes(stderr: &str, cwd: &Path) -> Vec<String> {
     for line in stderr.lines() {
         let Some((loc, msg)) = line.split_once(": error: ") else { continue };
         let note = if msg.contains("need \u{2018}typename\u{2019} before") || msg.contains("need 'typename' before") {
-            Some("gcc 3.3 accepted a dependent type without `typename` (implicit typename, removed in gcc 3.4); g++ 12 cannot: add `typename` before it".to_string())
+            Some("gcc 3.3 accepted a dependent type without `typename` (implicit typename, removed in gcc 3.4); g++ 12 cannot: add `typename` before it (repaired automatically once the unit's other errors are fixed)".to_string())
         } else if msg.starts_with("redefinition of") && is_parameter_redefinition(sources.before(loc, 1)) {
-            Some("gcc 3.3 accepted the same parameter name twice in one declaration; g++ 12 cannot: rename one of the parameters".to_string())
+            Some("gcc 3.3 accepted the same parameter name twice in one declaration; g++ 12 cannot: rename one of the parameters (repaired automatically once the unit's other errors are fixed)".to_string())
         } else if let Some(name) = undeclared_name(msg) {
             declared_in_earlier_for(sources.before(loc, 60), &name).then(|| {
-                format!("`{name}` is declared in an earlier `for` statement: gcc 3.3's old for-scope rule kept it visible after the loop; g++ 12 has no switch for that: declare `{name}` before the loop")
+                format!("`{name}` is declared in an earlier `for` statement: gcc 3.3's old for-scope rule kept it visible after the loop; g++ 12 has no switch for that: declare `{name}` before the loop (repaired automatically once the unit's other errors are fixed)")
             })
         } else {
             None
@@ -73,7 +74,9 @@ fn declared_in_earlier_for(lines: &[String], name: &str) -> bool {
         l.find("for (").or_else(|| l.find("for(")).is_some_and(|i| {
             let head = &l[i..];
             let decl = head.split(';').next().unwrap_or("");
-            decl.split(|c: char| !(c.is_alphanumeric() || c == '_')).any(|w| w == name) && decl.contains('=')
+            // The name is declared (left of `=`), not merely used in the initialiser.
+            let declarator = decl.split('=').next().unwrap_or("");
+            declarator.split(|c: char| !(c.is_alphanumeric() || c == '_')).any(|w| w == name) && decl.contains('=')
         })
     })
 }

@@ -20,6 +20,7 @@ pub mod ldlog;
 mod legacy_notes;
 pub mod mkbin;
 pub mod ocf;
+mod repair;
 mod root;
 
 use std::ffi::OsString;

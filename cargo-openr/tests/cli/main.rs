@@ -8,6 +8,7 @@ mod corpus;
 mod devloop;
 mod front;
 mod legacy_c;
+mod legacy_repair;
 mod link;
 mod load;
 mod mujoco;

@@ -1,0 +1,210 @@
+//! The legacy-repair step of `mipsel-linux-g++`/`-gcc`: when g++ rejects a unit with
+//! errors of the classes gcc 3.3 accepted ([`rules`]), the unit and its user headers are
+//! copied into a private directory ([`shadow`]), repaired there with g++'s fix-its and
+//! our rewrites, round after round (syntax-only runs) until g++ accepts them, and the
+//! shadow unit is compiled to the user's `-o`. Each repair is reported as a
+//! `file:line:col: note: [cargo-openr] …` of the user's file; diagnostics, `__FILE__`,
+//! debug info and `-MD` files name the user's files. The user's files are never written.
+//!
+//! Nothing of this runs when g++ accepts the unit the first time.
+mod args;
+mod diag;
+mod rules;
+mod shadow;
+mod text;
+
+use std::collections::HashSet;
+use std::ffi::OsString;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+use rules::Edit;
+use shadow::Shadow;
+
+/// Enough for a header with a dozen legacy spots even under `-fmax-errors=1`.
+const MAX_ROUNDS: usize = 24;
+
+/// A repaired compile: the notes and the final compile's stderr, its exit code.
+pub(crate) struct Repaired {
+    pub stderr: String,
+    pub code: i32,
+}
+
+/// Tries the repair of the failed compile `host + args`, whose stderr was `first`.
+/// `None`: nothing to repair, or the repaired unit still fails — the caller reports the
+/// original failure. The private directory is gone when this returns.
+pub(crate) fn attempt(exe: &Path, host: &[&str], args: &[OsString], first: &str) -> Option<Repaired> {
+    if !first.lines().filter_map(diag::split_diag).any(|(_, level, msg)| level == "error" && rules::may_repair(msg)) {
+        return None;
+    }
+    let log = std::env::var_os("OPENR_REPAIR_LOG").is_some();
+    let Some(unit) = args::unit(args) else {
+        log.then(|| eprintln!("[cargo-openr] repair: not a compile of one unit"));
+        return None;
+    };
+    let cwd = std::env::current_dir().ok()?;
+    let dir = PrivateDir::new()?;
+    let root = std::env::current_exe().ok().and_then(|e| crate::root::root_from_exe(&e));
+    let pre = dir.0.join("unit.ii");
+    let run = quiet(exe, host, &args::preprocess(args, unit, &pre));
+    let Some(text) = std::fs::read_to_string(&pre).ok().filter(|_| run.status.success()) else {
+        log.then(|| eprintln!("[cargo-openr] repair: preprocessing failed:\n{}", String::from_utf8_lossy(&run.stderr)));
+        return None;
+    };
+    let graph = shadow::include_graph(&text);
+    let _ = std::fs::remove_file(&pre);
+    let Some(mut shadow) = Shadow::new(&graph, &cwd, root.as_deref(), &dir.0) else {
+        log.then(|| eprintln!("[cargo-openr] repair: cannot read the unit {}", graph.first().map_or("", |n| &n.name)));
+        return None;
+    };
+    // (file, line, column, text): reported in the order of the sources.
+    let mut notes: Vec<(usize, usize, usize, String)> = Vec::new();
+    let mut noted = HashSet::new();
+    let mut moves = Moves::default();
+    for _ in 0..MAX_ROUNDS {
+        shadow.write().ok()?;
+        let out = quiet(exe, host, &args::round(args, unit, &shadow.files[0].path));
+        if out.status.success() {
+            return finish(exe, host, args, unit, &shadow, notes);
+        }
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        if log {
+            eprintln!("[cargo-openr] repair round in {}:\n{stderr}", dir.0.display());
+        }
+        let mut edits: Vec<Edit> = Vec::new();
+        // Errors after one we do not know may be its consequences, and so may later
+        // errors on a line just repaired: those g++ names as a legacy class are repaired,
+        // the others wait for the next round.
+        let mut lines = HashSet::new();
+        let mut clean = true;
+        for d in diag::errors(&stderr) {
+            let r = match rules::repair(&d, &shadow) {
+                _ if lines.contains(&(d.loc.file.clone(), d.loc.line)) => None,
+                Some(r) if clean || rules::names_its_class(&d.msg) => Some(r),
+                _ => None,
+            };
+            let Some(r) = r else {
+                clean = false;
+                continue;
+            };
+            lines.insert((d.loc.file.clone(), d.loc.line));
+            if log {
+                eprintln!("[cargo-openr] repair {}: {:?} {:?}", d.loc, r.class, r.edits);
+            }
+            if r.edits.iter().any(|e| edits.iter().any(|o| o.file == e.file && o.from < e.to.max(e.from + 1) && e.from < o.to.max(o.from + 1))) {
+                continue;
+            }
+            let loc = diag::Loc { col: moves.original_col(&d.loc), ..d.loc.clone() };
+            if noted.insert(loc.to_string()) {
+                let text = format!("{loc}: note: [cargo-openr] repaired {}: compiled {}, in a private copy (your file is unchanged)", r.class.what(), r.how);
+                notes.push((shadow.find(&loc.file).unwrap_or(0), loc.line, loc.col, text));
+            }
+            edits.extend(r.edits);
+        }
+        if edits.is_empty() {
+            return None;
+        }
+        apply(&mut shadow, edits, &mut moves);
+    }
+    None
+}
+
+/// The real compile of the repaired shadow unit (stdout is the user's).
+fn finish(exe: &Path, host: &[&str], args: &[OsString], unit: usize, shadow: &Shadow, mut notes: Vec<(usize, usize, usize, String)>) -> Option<Repaired> {
+    let out = Command::new(exe)
+        .args(host)
+        .args(args::final_compile(args, unit, &shadow.files[0].path))
+        .stderr(Stdio::piped())
+        .output()
+        .ok()?;
+    if !out.status.success() {
+        return None;
+    }
+    if let Some(d) = args::depfile(args, unit) {
+        shadow.fix_depfile(&d);
+    }
+    notes.sort();
+    let mut stderr: String = notes.into_iter().map(|n| n.3 + "\n").collect();
+    stderr.push_str(&String::from_utf8_lossy(&out.stderr));
+    Some(Repaired { stderr, code: out.status.code().unwrap_or(1) })
+}
+
+/// How the edits moved columns, to report the user's columns: per (file name, line),
+/// (column, length change) of each edit in the order applied.
+#[derive(Default)]
+struct Moves(std::collections::HashMap<(String, usize), Vec<(usize, isize)>>);
+
+impl Moves {
+    fn original_col(&self, loc: &diag::Loc) -> usize {
+        let mut col = loc.col as isize;
+        for &(c, delta) in self.0.get(&(loc.file.clone(), loc.line)).into_iter().flatten().rev() {
+            if col >= c as isize + delta.max(0) {
+                col -= delta;
+            } else if col >= c as isize {
+                col = c as isize;
+            }
+        }
+        col.max(1) as usize
+    }
+}
+
+/// Applies edits (none overlapping) to the shadow files' texts.
+fn apply(shadow: &mut Shadow, mut edits: Vec<Edit>, moves: &mut Moves) {
+    edits.sort_by_key(|e| std::cmp::Reverse((e.file, e.from)));
+    for e in edits {
+        let f = &mut shadow.files[e.file];
+        let line = f.src.line_of(e.from);
+        if !f.src.text[e.from..e.to].contains('\n') {
+            let col = e.from - f.src.offset(line, 1).unwrap_or(0) + 1;
+            let delta = e.text.len() as isize - (e.to - e.from) as isize;
+            moves.0.entry((f.name.clone(), line)).or_default().push((col, delta));
+        }
+        let mut t = std::mem::take(&mut f.src.text);
+        t.replace_range(e.from..e.to, &e.text);
+        f.src = text::Source::new(t);
+    }
+}
+
+/// A g++ run whose output is only read: English messages, nothing on the user's stdout.
+fn quiet(exe: &Path, host: &[&str], args: &[OsString]) -> std::process::Output {
+    Command::new(exe)
+        .args(host)
+        .args(args)
+        .env_remove("LC_ALL")
+        .env_remove("LANGUAGE")
+        .env("LC_MESSAGES", "C")
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .output()
+        .unwrap_or_else(|e| std::process::Output {
+            status: std::os::unix::process::ExitStatusExt::from_raw(1 << 8),
+            stdout: Vec::new(),
+            stderr: e.to_string().into_bytes(),
+        })
+}
+
+/// A `mkdtemp` directory (mode 0700), removed with everything in it when dropped.
+struct PrivateDir(PathBuf);
+
+impl PrivateDir {
+    fn new() -> Option<PrivateDir> {
+        use std::os::unix::ffi::OsStringExt;
+        let template = std::env::temp_dir().join("cargo-openr-repair-XXXXXX");
+        let mut bytes = OsString::from(template).into_vec();
+        bytes.push(0);
+        // SAFETY: `bytes` is a NUL-terminated template that mkdtemp rewrites in place.
+        let p = unsafe { libc::mkdtemp(bytes.as_mut_ptr().cast()) };
+        if p.is_null() {
+            return None;
+        }
+        bytes.pop();
+        Some(PrivateDir(PathBuf::from(OsString::from_vec(bytes))))
+    }
+}
+
+impl Drop for PrivateDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
