@@ -73,7 +73,7 @@ fn a_subname_used_twice_builds_with_the_projects_def_h_patch() {
     let (p, ok, log) = make_install("dup-subname", &[]);
     assert!(ok, "{log}");
     assert!(
-        log.contains("stubgen2: stub.cfg:13: warning: SubName 'Stdin' is already used by the observer service on stub.cfg:12;"),
+        log.contains("stubgen2: stub.cfg:14: warning: SubName 'Stdin' is already used by the observer service on stub.cfg:13;"),
         "stubgen2 warns with file:line:\n{log}"
     );
     let def = fs::read_to_string(p.dir.path().join("dup-subname/Console/def.h")).unwrap();
@@ -87,7 +87,7 @@ fn a_subname_used_twice_builds_with_the_projects_def_h_patch() {
         &[
             "Console : obsStdin = 0 (Console.Stdin.char.O)",
             "Console : obsStdinLine = 1 (Console.Stdin.RCRegion.O)",
-            "Console : 2 observers, 10 basic entries",
+            "Console : 2 observers, 12 basic entries",
         ],
     );
 }
