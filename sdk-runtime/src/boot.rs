@@ -23,6 +23,9 @@ use crate::timers::Timers;
 #[derive(Debug, Clone)]
 pub struct RunOptions {
     pub ms_dir: PathBuf,
+    /// A base tree laid under `ms_dir` (reads fall through to it, writes stay in
+    /// `ms_dir`: `ms`), as on a robot's stick.
+    pub ms_base: Option<PathBuf>,
     /// Robot design name (`ERS-7`), selects CFG sections and `GetRobotDesign`.
     pub design: String,
     /// Stop cleanly after this long.
@@ -87,6 +90,10 @@ const SHUTDOWN_TIMEOUT: Duration = Duration::from_secs(3);
 /// Loads and runs the stick until it ends; returns how it ended.
 pub fn run(opts: &RunOptions) -> Result<Outcome> {
     let ms = MsDir::new(&opts.ms_dir).map_err(|e| Error::io(&opts.ms_dir, e))?;
+    let ms = match &opts.ms_base {
+        Some(base) => ms.with_base(base).map_err(|e| Error::io(base, e))?,
+        None => ms,
+    };
     // The design first: it selects the CFG sections read next.
     let mut robot = crate::robot::VirtualRobot::from_design_name(&opts.design).ok_or_else(|| {
         let known: Vec<&str> = crate::robot::model::Design::ALL.iter().map(|d| d.name()).collect();

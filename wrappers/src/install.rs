@@ -360,15 +360,24 @@ fn run_quiet(cmd: &mut Command) -> Result<(), Error> {
     .into())
 }
 
+/// The base tree `base` (`WCONSOLE/nomemprot`, …; see `cargo openr config`) of `root`
+/// for robot design `design`: the directory holding its `OPEN-R`.
+pub fn base_tree(root: &Path, design: &str, base: &str) -> PathBuf {
+    let model = if matches!(design, "ERS-210" | "ERS-220") { "MS_ERS200" } else { "MS_ERS7" };
+    root.join("OPEN_R").join(model).join(base)
+}
+
 /// Memory Stick base trees (object-model 1.5): the directories and the comment-only
-/// OBJECT.CFG that a sample overlays.
+/// OBJECT.CFG that a sample overlays; `cargo openr run` lays one under the program's MS.
 fn write_base_trees(open_r: &Path) -> Result<(), Error> {
     const OBJECT_CFG: &str = "#\r\n# OBJECT.CFG of the base tree: list user objects here, one\r\n\
                               # /MS/OPEN-R/MW/OBJS/XXXXXXXX.BIN per line.\r\n#\r\n[ERS-210]\r\n";
-    const WLAN: &str = "# Wireless LAN settings (KEY=VALUE), read by the runtime's network layer.\r\n\
-                        HOSTNAME=AIBO\r\nETHER_IP=127.0.0.1\r\nETHER_NETMASK=255.0.0.0\r\n\
-                        IP_GATEWAY=127.0.0.1\r\nDNS_SERVER_1=127.0.0.1\r\nSSID=AIBONET\r\n\
-                        WEPENABLE=0\r\nAPMODE=1\r\nCHANNEL=3\r\n";
+    // The robot's defaults, the very ones the runtime assumes without the file: a run
+    // over the base tree reports the same settings as one without it.
+    let mut wlan = String::from("# Wireless LAN settings (KEY=VALUE), read by the runtime's network layer.\r\n");
+    for (k, v) in sdk_runtime::net::config::WLAN_DEFAULTS {
+        wlan.push_str(&format!("{k}={v}\r\n"));
+    }
     for model in ["MS_ERS7", "MS_ERS200"] {
         for kind in ["BASIC", "WLAN", "WCONSOLE"] {
             for prot in ["memprot", "nomemprot"] {
@@ -378,8 +387,11 @@ fn write_base_trees(open_r: &Path) -> Result<(), Error> {
                     fs::create_dir_all(tree.join(d)).map_err(|e| Error::io(tree.join(d), e))?;
                 }
                 write(&tree.join("SYSTEM/CONF/OBJECT.CFG"), b"# System objects are built into the cargo-openr runtime.\r\n")?;
+                write(&tree.join("SYSTEM/CONF/EXTOBJ.CFG"), b"# Extra system objects: none, the runtime provides them.\r\n")?;
+                write(&tree.join("SYSTEM/CONF/EMON.CFG"), b"# Exception monitor script: the runtime reports crashes itself.\r\n")?;
                 if kind != "BASIC" {
-                    write(&tree.join("SYSTEM/CONF/WLANDFLT.TXT"), WLAN.as_bytes())?;
+                    write(&tree.join("SYSTEM/CONF/WLANDFLT.TXT"), wlan.as_bytes())?;
+                    write(&tree.join("SYSTEM/CONF/CARDDRV.CFG"), b"# Network card drivers: the runtime's network layer stands for them.\r\n")?;
                 }
             }
         }

@@ -40,6 +40,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         ("speed", speed_text(cfg.speed.value), cfg.speed.source.to_string()),
         ("cxxflags", cfg.cxxflags.value.join(" "), cfg.cxxflags.source.to_string()),
         ("ldflags", cfg.ldflags.value.join(" "), cfg.ldflags.source.to_string()),
+        ("base", cfg.base.value.clone(), cfg.base.source.to_string()),
     ];
     match args.format {
         Format::Json => {

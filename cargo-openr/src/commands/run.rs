@@ -38,6 +38,9 @@ pub struct Args {
     /// Robot design: selects [ERS-…] sections of the CFG files and GetRobotDesign() (default ERS-7; see `cargo openr config`)
     #[arg(long)]
     design: Option<String>,
+    /// Base tree of the SDK root laid under MS_DIR, as a robot's stick has it: BASIC, WLAN or WCONSOLE, optionally /memprot or /nomemprot, or none (default WCONSOLE/nomemprot; see `cargo openr config`)
+    #[arg(long, value_name = "KIND[/PROT]")]
+    base: Option<String>,
     /// Skip CONNECT.CFG lines that name unknown services (the robot's behaviour) instead of failing
     #[arg(long)]
     lenient_connect: bool,
@@ -130,7 +133,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let world = check_sim_options(&args)?;
     let ms_dir = args.ms_dirs[0].clone();
     let project = ms_dir.parent().map(PathBuf::from);
-    let cfg = config::resolve(&ConfigInputs { sdk: args.sdk.clone(), design: args.design.clone(), speed: args.speed.clone(), project, ..Default::default() })?;
+    let cfg = config::resolve(&ConfigInputs { sdk: args.sdk.clone(), design: args.design.clone(), speed: args.speed.clone(), base: args.base.clone(), project, ..Default::default() })?;
     // The SDK root whose system objects this run loads, as `ops::config` resolves it
     // (`--sdk`, `$OPENRSDK_ROOT` when it is one of ours, `openr.toml`, the per-user default).
     let root = cfg.sdk.value;
@@ -139,7 +142,9 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         return simulate(&args, &world, &root, shell);
     }
     sdk_runtime::net::config::apply_cli(args.net_bind, args.port_offset);
+    let ms_base = base_tree(&root, &cfg.design.value, &cfg.base.value)?;
     let opts = RunOptions {
+        ms_base,
         system_objects: install::system_objects(&root),
         trace: args.trace.clone(),
         speed: cfg.speed.value,
@@ -164,6 +169,18 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     };
     shell.status("Finished", &format!("{} ({how}; {} frames, {} late)", ms_dir.display(), outcome.frames, outcome.late_frames));
     Ok(())
+}
+
+/// The directory of the base tree `base` in the SDK root (`None` for `none`).
+fn base_tree(root: &Path, design: &str, base: &str) -> anyhow::Result<Option<PathBuf>> {
+    if base == "none" {
+        return Ok(None);
+    }
+    let dir = install::base_tree(root, design, base);
+    if !dir.join("OPEN-R").is_dir() {
+        anyhow::bail!("the SDK root {} has no base tree {base} ({} is missing): reinstall it with `cargo openr sdk install`", root.display(), dir.join("OPEN-R").display());
+    }
+    Ok(Some(dir))
 }
 
 /// One robot of the MuJoCo world: the MS_DIR its runtime boots and the address its
@@ -231,6 +248,7 @@ fn simulate(args: &Args, world: &[Robot], root: &Path, shell: &mut Shell) -> any
         opt("--for", args.run_for.map(|d| format!("{}ms", d.as_millis()).into()));
         opt("--design", args.design.clone().map(Into::into));
         opt("--speed", args.speed.clone().map(Into::into));
+        opt("--base", args.base.clone().map(Into::into));
         opt("--trace", args.trace.as_ref().map(|t| per_robot(t, k).into()));
         opt("--images", args.images.clone().map(Into::into));
         // Cameras of neighbouring robots a frame apart: the simulator draws a quarter of

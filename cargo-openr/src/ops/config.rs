@@ -6,6 +6,7 @@
 //! | SDK root | `--sdk DIR` | `OPENRSDK_ROOT` (only a cargo-openr root) | `sdk = "DIR"` (relative to the file) | `~/.local/share/cargo-openr/OPEN_R_SDK` |
 //! | robot design | `--design NAME` | `OPENR_DESIGN` | `design = "ERS-7"` | `ERS-7` |
 //! | speed | `--speed F\|max` | `OPENR_SPEED` | `speed = 4` or `speed = "max"` | `1` |
+//! | Memory Stick base tree (`run`) | `--base KIND[/PROT]` | `OPENR_BASE` | `base = "WLAN/memprot"` | `WCONSOLE/nomemprot` |
 //! | extra C/C++ flags (`build`) | `--cxxflags "…"` | `OPENR_CXXFLAGS` | `cxxflags = "…"` | none |
 //! | extra link arguments (`build`) | `--ldflags "…"` | `OPENR_LDFLAGS` | `ldflags = "…"` | none |
 //!
@@ -55,6 +56,7 @@ pub struct ConfigInputs {
     pub speed: Option<String>,
     pub cxxflags: Option<String>,
     pub ldflags: Option<String>,
+    pub base: Option<String>,
     /// The project directory (where `openr.toml` is looked for, then its parents).
     pub project: Option<PathBuf>,
 }
@@ -67,6 +69,8 @@ pub struct Config {
     pub speed: Setting<Speed>,
     pub cxxflags: Setting<Vec<String>>,
     pub ldflags: Setting<Vec<String>>,
+    /// The base tree under the program's MS (`WCONSOLE/nomemprot`, …), or `none`.
+    pub base: Setting<String>,
     /// The `openr.toml` read, if any.
     pub project_file: Option<PathBuf>,
 }
@@ -79,6 +83,7 @@ pub struct ProjectFile {
     pub speed: Option<(String, usize)>,
     pub cxxflags: Option<(String, usize)>,
     pub ldflags: Option<(String, usize)>,
+    pub base: Option<(String, usize)>,
 }
 
 /// Parses the subset of TOML `openr.toml` uses: `key = "string"` or `key = number`,
@@ -110,7 +115,8 @@ pub fn parse_project_file(path: &Path, text: &str) -> anyhow::Result<ProjectFile
             "speed" => &mut out.speed,
             "cxxflags" => &mut out.cxxflags,
             "ldflags" => &mut out.ldflags,
-            _ => return Err(err(format!("unknown key `{key}` (known: sdk, design, speed, cxxflags, ldflags)"))),
+            "base" => &mut out.base,
+            _ => return Err(err(format!("unknown key `{key}` (known: sdk, design, speed, cxxflags, ldflags, base)"))),
         };
         if slot.is_some() {
             return Err(err(format!("`{key}` is set twice")));
@@ -191,17 +197,45 @@ pub fn resolve(inputs: &ConfigInputs) -> anyhow::Result<Config> {
         };
         anyhow::anyhow!("{at}{e}")
     })?;
+    let (base, base_src) = pick(&inputs.base, "--base", "OPENR_BASE", &project.base, DEFAULT_BASE);
+    let base = parse_base(&base).map_err(|e| {
+        let at = match &base_src {
+            Source::Project(p) => format!("{}:{}: ", p.display(), project.base.as_ref().map_or(0, |s| s.1)),
+            other => format!("{other}: "),
+        };
+        anyhow::anyhow!("{at}{e}")
+    })?;
     let words = |(v, src): (String, Source)| Setting { value: v.split_whitespace().map(str::to_string).collect(), source: src };
     let cxxflags = words(pick(&inputs.cxxflags, "--cxxflags", "OPENR_CXXFLAGS", &project.cxxflags, ""));
     let ldflags = words(pick(&inputs.ldflags, "--ldflags", "OPENR_LDFLAGS", &project.ldflags, ""));
     Ok(Config {
         cxxflags,
         ldflags,
+        base: Setting { value: base, source: base_src },
         sdk: Setting { value: std::path::absolute(&sdk.value).unwrap_or(sdk.value), source: sdk.source },
         design: Setting { value: design, source: design_src },
         speed: Setting { value: speed, source: speed_src },
         project_file,
     })
+}
+
+/// The base tree a user copies for most of Sony's samples (their READMEs: WCONSOLE,
+/// which adds the wireless console, without memory protection).
+pub const DEFAULT_BASE: &str = "WCONSOLE/nomemprot";
+
+/// `WCONSOLE/nomemprot`, `wlan` (= `WLAN/nomemprot`), `BASIC/memprot`, `none` (the
+/// program's MS alone), spelled in any case; normalised as the SDK root spells it.
+pub fn parse_base(s: &str) -> Result<String, String> {
+    if s.eq_ignore_ascii_case("none") {
+        return Ok("none".into());
+    }
+    let (kind, prot) = s.split_once('/').unwrap_or((s, "nomemprot"));
+    let kind = ["BASIC", "WLAN", "WCONSOLE"].into_iter().find(|k| k.eq_ignore_ascii_case(kind.trim()));
+    let prot = ["memprot", "nomemprot"].into_iter().find(|p| p.eq_ignore_ascii_case(prot.trim()));
+    match (kind, prot) {
+        (Some(k), Some(p)) => Ok(format!("{k}/{p}")),
+        _ => Err(format!("base `{s}`: expected BASIC, WLAN or WCONSOLE, optionally with /memprot or /nomemprot (default {DEFAULT_BASE}), or none")),
+    }
 }
 
 /// `1`, `4`, `0.5`, `max`.
@@ -218,13 +252,26 @@ mod tests {
 
     #[test]
     fn project_file_subset() {
-        let f = parse_project_file(Path::new("openr.toml"), "# c\nsdk = \"../sdk\" # root\n\ndesign = \"ERS-210\"\nspeed = 4\n").unwrap();
+        let f = parse_project_file(Path::new("openr.toml"), "# c\nsdk = \"../sdk\" # root\n\ndesign = \"ERS-210\"\nspeed = 4\nbase = \"WLAN\"\n").unwrap();
+        assert_eq!(f.base, Some(("WLAN".into(), 6)));
         assert_eq!(f.sdk, Some(("../sdk".into(), 2)));
         assert_eq!(f.design, Some(("ERS-210".into(), 4)));
         assert_eq!(f.speed, Some(("4".into(), 5)));
         for (text, want) in [("colour = \"red\"\n", "openr.toml:1: unknown key `colour`"), ("x\n", "expected `key = value`"), ("[a]\n", "expected"), ("speed = max\n", "not a value")] {
             let e = parse_project_file(Path::new("openr.toml"), text).unwrap_err().to_string();
             assert!(e.contains(want), "{text}: {e}");
+        }
+    }
+
+    #[test]
+    fn base_trees() {
+        assert_eq!(parse_base("wconsole/NOMEMPROT").unwrap(), "WCONSOLE/nomemprot");
+        assert_eq!(parse_base("WLAN").unwrap(), "WLAN/nomemprot");
+        assert_eq!(parse_base("BASIC/memprot").unwrap(), "BASIC/memprot");
+        assert_eq!(parse_base("None").unwrap(), "none");
+        for bad in ["", "FULL", "WLAN/prot", "WLAN/memprot/x"] {
+            let e = parse_base(bad).unwrap_err();
+            assert!(e.contains("expected BASIC, WLAN or WCONSOLE"), "{bad}: {e}");
         }
     }
 }

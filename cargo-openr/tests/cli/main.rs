@@ -19,5 +19,6 @@ mod run;
 mod rust_objects;
 mod rust_robot;
 mod sdk;
+mod stick;
 mod support;
 mod tools;
