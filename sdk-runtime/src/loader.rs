@@ -67,14 +67,16 @@ impl Module {
     pub fn load(bin: &Path, elf: &[u8], index: usize) -> Result<Module> {
         let stem = bin.file_stem().map_or("object".into(), |s| s.to_string_lossy().into_owned());
         let name = format!("{index:02}-{stem}.so");
-        let (handle, so_path) = crate::scratch::dlopen_image(&name, elf, libc::RTLD_NOW | libc::RTLD_LOCAL)
+        let (opened, so_path) = crate::scratch::dlopen_image(&name, elf, libc::RTLD_NOW | libc::RTLD_LOCAL)
             .map_err(|e| Error::load(bin, format!("cannot place its image for loading: {e}")))?;
-        if handle.is_null() {
-            let err = dlerror();
-            let prefix = format!("{}: ", so_path.display());
-            let msg = crate::demangle::annotate(err.strip_prefix(&prefix).unwrap_or(&err));
-            return Err(Error::load(bin, format!("cannot load: {msg}")));
-        }
+        let handle = match opened {
+            Ok(handle) => handle,
+            Err(err) => {
+                let prefix = format!("{}: ", so_path.display());
+                let msg = crate::demangle::annotate(err.strip_prefix(&prefix).unwrap_or(&err));
+                return Err(Error::load(bin, format!("cannot load: {msg}")));
+            }
+        };
         let sym = |name: &str| -> Option<*mut c_void> {
             let n = CString::new(name).ok()?;
             let p = unsafe { libc::dlsym(handle, n.as_ptr()) };
@@ -164,13 +166,4 @@ fn read_entry_table(table: *mut c_void) -> std::result::Result<Vec<(u32, EntryFn
         out.push((row.selector, unsafe { std::mem::transmute::<*mut c_void, EntryFn>(row.entry) }));
     }
     Err("its ObjectEntryTable has no {UNDEF, ENTRY_UNDEF} terminator within 4096 rows".into())
-}
-
-fn dlerror() -> String {
-    let p = unsafe { libc::dlerror() };
-    if p.is_null() {
-        "unknown dlopen error".into()
-    } else {
-        unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned()
-    }
 }

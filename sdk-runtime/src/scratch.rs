@@ -20,32 +20,39 @@ use std::path::{Path, PathBuf};
 /// The environment variable that makes images go through files.
 pub const FILES_VAR: &str = "OPENR_SCRATCH_FILES";
 
-/// `dlopen`s `elf` (named `name` where a name shows) with `flags`; returns the handle
-/// (null on failure: see `dlerror`) and the path it was opened by.
-pub fn dlopen_image(name: &str, elf: &[u8], flags: libc::c_int) -> std::io::Result<(*mut libc::c_void, PathBuf)> {
+/// What `dlopen` gave: the handle, or its error message (taken at once: the next libc
+/// call of the runtime may clear it).
+pub type Opened = std::result::Result<*mut libc::c_void, String>;
+
+/// `dlopen`s `elf` (named `name` where a name shows) with `flags`; returns what dlopen
+/// gave and the path it opened, or why the image could not be placed.
+pub fn dlopen_image(name: &str, elf: &[u8], flags: libc::c_int) -> std::io::Result<(Opened, PathBuf)> {
     let files_asked = std::env::var_os(FILES_VAR).is_some_and(|v| v == "1");
     if !files_asked {
+        // Without memory files (old kernel, seccomp, vm.memfd_noexec=2): a file.
         if let Ok(path) = memory_file(name, elf) {
-            let handle = dlopen(&path, flags)?;
-            if !handle.is_null() {
-                return Ok((handle, path));
-            }
-            // A memory file the kernel will not map executable: try a file.
+            return Ok((dlopen(&path, flags)?, path));
         }
     }
     let dir = private_dir()?;
     let path = dir.join(name);
-    let written = write_new(&path, elf);
-    let handle = written.and_then(|()| dlopen(&path, flags));
+    let opened = write_new(&path, elf).and_then(|()| dlopen(&path, flags));
     let _ = std::fs::remove_file(&path);
     let _ = std::fs::remove_dir(&dir);
-    handle.map(|h| (h, path))
+    opened.map(|o| (o, path))
 }
 
-fn dlopen(path: &Path, flags: libc::c_int) -> std::io::Result<*mut libc::c_void> {
+fn dlopen(path: &Path, flags: libc::c_int) -> std::io::Result<Opened> {
     let c = CString::new(path.as_os_str().as_bytes()).map_err(|_| std::io::ErrorKind::InvalidInput)?;
     // SAFETY: a NUL-terminated path; running the object's constructors is the point.
-    Ok(unsafe { libc::dlopen(c.as_ptr(), flags) })
+    let handle = unsafe { libc::dlopen(c.as_ptr(), flags) };
+    if !handle.is_null() {
+        return Ok(Ok(handle));
+    }
+    // SAFETY: dlerror's string is valid until the next dl* call; copied at once.
+    let err = unsafe { libc::dlerror() };
+    let text = if err.is_null() { "unknown dlopen error".into() } else { unsafe { CStr::from_ptr(err) }.to_string_lossy().into_owned() };
+    Ok(Err(text))
 }
 
 /// The image in a memory file, as a path of this process's descriptor table.
