@@ -30,6 +30,8 @@ const ROUTES: &[(&str, &str)] = &[
     ("opendir(/etc)", "ENOENT"),
     ("stat(/etc/passwd)", "ENOENT"),
     ("access(/etc/passwd)", "ENOENT"),
+    ("realpath(/etc/passwd)", "ENOENT"),
+    ("realpath(/MS/OUTDIR)", "EACCES"),
     ("symlink(/etc/passwd, <outside>/HOSTLINK)", "ENOENT"),
     ("symlink(/etc, /MS/OPEN-R/ETC)", "EPERM"),
     ("link(<outside>/SECRET.TXT, /MS/HARD.TXT)", "ENOENT"),
@@ -97,6 +99,9 @@ fn the_stick_still_works_through_inner_links_and_own_threads() {
     let out = run_ms(&p.ms(), &["--for", "1s", "--speed", "max"]);
     assert!(out.stdout.contains("Escape : own thread: ifstream(/MS/.../ESCAPE.CFG) ok"), "{}", out.stdout);
     assert!(out.stdout.contains("Escape : link inside the stick, write and read ok"), "{}", out.stdout);
+    // realpath names /MS paths, as stored, never the host path behind them.
+    assert!(out.stdout.contains("Escape : realpath(/ms/open-r/../OPEN-R/mw/conf/escape.cfg) = /MS/OPEN-R/MW/CONF/ESCAPE.CFG"), "{}", out.stdout);
+    assert!(out.stdout.contains("Escape : realpath(/MS/INSIDE) = /MS/OPEN-R/MW/DATA/P"), "{}", out.stdout);
     assert_eq!(fs::read_to_string(p.ms().join("OPEN-R/MW/DATA/P/OK.TXT")).unwrap(), "written through INSIDE\n");
 }
 

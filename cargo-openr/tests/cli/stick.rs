@@ -59,6 +59,9 @@ fn the_base_tree_is_chosen_with_base_or_openr_toml() {
     let out = run_ms(&p.ms(), &["--for", "1s", "--speed", "max"]);
     assert!(out.stdout.contains(LOG), "{}", out.stdout);
     assert!(out.stdout.contains("SaveLog : no /MS/OPEN-R/SYSTEM/CONF/WLANDFLT.TXT"), "{}", out.stdout);
+    // ERS-210/220 sticks come from MS_ERS200 (the same trees, for now).
+    let out = run_ms(&p.ms(), &["--for", "1s", "--speed", "max", "--design", "ERS-210", "--base", "WCONSOLE/memprot"]);
+    assert!(out.stdout.contains(LOG) && out.stdout.contains("says HOSTNAME=AIBO"), "{}\n{}", out.stdout, out.stderr);
     // The command line wins over the file.
     let out = run_ms(&p.ms(), &["--for", "1s", "--speed", "max", "--base", "WLAN"]);
     assert!(out.stdout.contains("WLANDFLT.TXT says HOSTNAME=AIBO"), "{}", out.stdout);

@@ -10,7 +10,7 @@ use std::ptr::null_mut;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use super::trampoline::trampolines;
-use super::{is_objects, map, set_errno, Mapped};
+use super::{host_to_ms, is_objects, map, set_errno, Mapped};
 use crate::ms::Access;
 
 type C = *const c_char;
@@ -148,7 +148,7 @@ trampolines! {
     "truncate" => truncate, "truncate64" => truncate64,
     "chmod" => chmod, "fchmodat" => fchmodat, "chown" => chown, "lchown" => lchown, "fchownat" => fchownat,
     "utime" => utime, "utimes" => utimes, "lutimes" => lutimes, "futimesat" => futimesat, "utimensat" => utimensat,
-    "readlink" => readlink, "readlinkat" => readlinkat,
+    "readlink" => readlink, "readlinkat" => readlinkat, "realpath" => realpath,
     "getxattr" => getxattr, "lgetxattr" => lgetxattr, "listxattr" => listxattr, "llistxattr" => llistxattr,
     "setxattr" => setxattr, "lsetxattr" => lsetxattr, "removexattr" => removexattr, "lremovexattr" => lremovexattr,
     "link" => link, "linkat" => linkat, "symlink" => symlink, "symlinkat" => symlinkat,
@@ -266,6 +266,42 @@ unsafe extern "C" fn readlink(path: C, buf: P, len: usize, _: usize, _: usize, c
 }
 unsafe extern "C" fn readlinkat(fd: c_int, path: C, buf: P, len: usize, _: usize, caller: usize) -> isize {
     unsafe { with_at(caller, fd, path, Access::Read, true, -1, |p| call!("readlinkat", -1, fn(c_int, C, P, usize) -> isize, fd, p, buf, len)) }
+}
+
+/// For an object, the canonical `/MS` path (`/MS/OPEN-R/../OPEN-R/MW` → `/MS/OPEN-R/MW`,
+/// names as stored), never the host path behind it.
+unsafe extern "C" fn realpath(path: C, resolved: *mut c_char, _: usize, _: usize, _: usize, caller: usize) -> *mut c_char {
+    if !is_objects(caller) {
+        return call!("realpath", null_mut(), fn(C, *mut c_char) -> *mut c_char, path, resolved);
+    }
+    // SAFETY: the caller's C string.
+    let mapped = unsafe { map(caller, path, Access::Read) };
+    let host = match mapped.ptr(path) {
+        Ok(p) => p,
+        Err(e) => return fail(e, null_mut()),
+    };
+    let real = call!("realpath", null_mut(), fn(C, *mut c_char) -> *mut c_char, host, null_mut());
+    if real.is_null() {
+        return null_mut(); // errno from realpath (ENOENT, ENOTDIR)
+    }
+    // SAFETY: realpath's malloc'd string, freed once read.
+    let text = unsafe { std::ffi::CStr::from_ptr(real) }.to_string_lossy().into_owned();
+    unsafe { libc::free(real.cast()) };
+    let Some(ms) = host_to_ms(&text) else { return fail(libc::EACCES, null_mut()) };
+    let bytes = ms.as_bytes();
+    if bytes.len() >= libc::PATH_MAX as usize {
+        return fail(libc::ENAMETOOLONG, null_mut());
+    }
+    // SAFETY: `resolved` holds PATH_MAX bytes (realpath's contract), or we allocate.
+    unsafe {
+        let out = if resolved.is_null() { libc::malloc(bytes.len() + 1).cast::<c_char>() } else { resolved };
+        if out.is_null() {
+            return fail(libc::ENOMEM, null_mut());
+        }
+        std::ptr::copy_nonoverlapping(bytes.as_ptr().cast(), out, bytes.len());
+        *out.add(bytes.len()) = 0;
+        out
+    }
 }
 
 // ---- directories ----

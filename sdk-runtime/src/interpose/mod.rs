@@ -115,6 +115,11 @@ fn as_ms_path(rt: &Runtime, p: &str) -> Option<String> {
     })
 }
 
+/// The `/MS` path a host path of the program's directory or the base tree stands for.
+pub(crate) fn host_to_ms(host: &str) -> Option<String> {
+    as_ms_path(Runtime::get()?, host)
+}
+
 pub(crate) fn set_errno(e: i32) {
     // SAFETY: errno is thread-local.
     unsafe { *libc::__errno_location() = e };

@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <stdlib.h>
+#include <limits.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <unistd.h>
@@ -175,6 +176,9 @@ Escape::ThroughHostPaths()
     TRY("opendir(/etc)", Got(opendir("/etc")));
     TRY("stat(/etc/passwd)", Stats("/etc/passwd"));
     TRY("access(/etc/passwd)", Zero(access("/etc/passwd", R_OK)));
+    char resolved[PATH_MAX];
+    TRY("realpath(/etc/passwd)", realpath("/etc/passwd", resolved) != NULL);
+    TRY("realpath(/MS/OUTDIR)", realpath("/MS/OUTDIR", resolved) != NULL);
 
     snprintf(path, sizeof path, "%s/SECRET.TXT", outside);
     snprintf(other, sizeof other, "%s/HOSTLINK", outside);
@@ -227,4 +231,12 @@ Escape::StillWorks()
     if (fp != NULL) fclose(fp);
     ok = ok && GotStream("/MS/OPEN-R/MW/DATA/P/ok.txt");
     OSYSPRINT(("Escape : link inside the stick, write and read %s\n", ok ? "ok" : "FAILED"));
+
+    char resolved[PATH_MAX];
+    if (realpath("/ms/open-r/../OPEN-R/mw/conf/escape.cfg", resolved) != NULL) {
+        OSYSPRINT(("Escape : realpath(/ms/open-r/../OPEN-R/mw/conf/escape.cfg) = %s\n", resolved));
+    }
+    if (realpath("/MS/INSIDE", resolved) != NULL) {
+        OSYSPRINT(("Escape : realpath(/MS/INSIDE) = %s\n", resolved));
+    }
 }
