@@ -59,7 +59,8 @@ pub(crate) fn run(lang: Lang, args: Vec<OsString>) -> Result<i32, Error> {
     let exe = host_tool(default, &[env])?;
     // stderr is read so that errors gcc 3.3 did not make get repaired or explained;
     // everything else (stdout, exit status) is the host compiler's own.
-    let host = host_flags(lang, &args);
+    let mut host = host_flags(lang, &args);
+    host.extend(crate::sanitize::compile_flags()?);
     let mut cmd = Command::new(&exe);
     cmd.args(&host).args(&args).stderr(Stdio::piped());
     let out = cmd.spawn().and_then(|c| c.wait_with_output()).map_err(|e| Error::io(PathBuf::from(cmd.get_program()), e))?;

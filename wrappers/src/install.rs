@@ -83,7 +83,7 @@ pub fn install(prefix: &Path, exe: &Path) -> Result<Outcome, Error> {
     }
     let name = prefix.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "sdk".into());
     let staging = parent.join(format!(".{name}.partial-{}", std::process::id()));
-    let result = build_tree(&staging, &exe_bytes, &stamp).and_then(|()| swap_in(&staging, prefix));
+    let result = build_tree(&staging, prefix, &exe_bytes, &stamp).and_then(|()| swap_in(&staging, prefix));
     if result.is_err() {
         let _ = fs::remove_dir_all(&staging);
     }
@@ -150,7 +150,16 @@ fn swap_in(staging: &Path, prefix: &Path) -> Result<(), Error> {
     Ok(())
 }
 
-fn build_tree(root: &Path, exe: &[u8], stamp: &str) -> Result<(), Error> {
+/// `-fdebug-prefix-map` from the staging directory the root is built in to the root's
+/// final place, so that the libraries' and system objects' debug info names sources that
+/// exist after the install (gdb, sanitizer reports: `<root>/OPEN_R/src/OPENR/OObject.cc`).
+fn debug_prefix_map(staging: &Path, root: &Path) -> String {
+    let root = std::path::absolute(root).unwrap_or_else(|_| root.to_path_buf());
+    format!("-fdebug-prefix-map={}={}", staging.display(), root.display())
+}
+
+fn build_tree(root: &Path, final_root: &Path, exe: &[u8], stamp: &str) -> Result<(), Error> {
+    let map = debug_prefix_map(root, final_root);
     let _ = fs::remove_dir_all(root);
     let include = root.join("OPEN_R/include");
     let src = root.join("OPEN_R/src");
@@ -158,8 +167,8 @@ fn build_tree(root: &Path, exe: &[u8], stamp: &str) -> Result<(), Error> {
     write_files(&src, sdk_files::CXX)?;
     write_files(&root.join(SIM_DIR), sdk_files::SIM)?;
     install_tools(root, exe)?;
-    build_archives(root, &include, &src)?;
-    build_system_objects(root, &include, &src)?;
+    build_archives(root, &include, &src, &map)?;
+    build_system_objects(root, &include, &src, &map)?;
     write_base_trees(&root.join("OPEN_R"))?;
     write(&root.join(STAMP), stamp.as_bytes())
 }
@@ -226,7 +235,7 @@ fn install_tools(root: &Path, exe: &[u8]) -> Result<(), Error> {
 /// Compiles `OPEN_R/src/<lib>/*.cc` into `OPEN_R/lib/lib<lib>.a`, one archive per
 /// directory. Archives of families with no sources yet are still created (empty) so
 /// that `-l<lib>` always resolves.
-fn build_archives(root: &Path, include: &Path, src: &Path) -> Result<(), Error> {
+fn build_archives(root: &Path, include: &Path, src: &Path, map: &str) -> Result<(), Error> {
     let lib = root.join("OPEN_R/lib");
     let obj = root.join("OPEN_R/lib/.obj");
     fs::create_dir_all(&obj).map_err(|e| Error::io(&obj, e))?;
@@ -250,12 +259,12 @@ fn build_archives(root: &Path, include: &Path, src: &Path) -> Result<(), Error> 
         let handles: Vec<_> = chunks
             .iter()
             .map(|chunk| {
-                let (cxx, src, include) = (&cxx, src, include);
+                let (cxx, src, include, map) = (&cxx, src, include, map);
                 s.spawn(move || -> Result<(), Error> {
                     for (_, cc, o) in chunk {
                         fs::create_dir_all(o.parent().unwrap()).map_err(|e| Error::io(o, e))?;
                         let mut cmd = Command::new(cxx);
-                        cmd.args(["-std=gnu++98", "-fPIC", "-O2", "-g", "-c", "-Wall", "-Wno-unused"])
+                        cmd.args(["-std=gnu++98", "-fPIC", "-O2", "-g", "-c", "-Wall", "-Wno-unused", map])
                             .arg(format!("-I{}", src.display()))
                             .arg(format!("-I{}", include.join("R4000").display()))
                             .arg(format!("-I{}", include.join("MCOOP").display()))
@@ -286,7 +295,7 @@ fn build_archives(root: &Path, include: &Path, src: &Path) -> Result<(), Error> 
 pub const SYSTEM_OBJECTS: &[(&str, &str)] = &[("VirtualRobotComm", "VRCOMM.BIN"), ("VirtualRobotAudioComm", "VRAUCOMM.BIN")];
 
 /// Builds each system object like a user object: stubgen2, the compiler, mkbin.
-fn build_system_objects(root: &Path, include: &Path, src: &Path) -> Result<(), Error> {
+fn build_system_objects(root: &Path, include: &Path, src: &Path, map: &str) -> Result<(), Error> {
     let cxx = host_tool("g++", &["OPENR_HOST_CXX"])?;
     let objs_dir = root.join("OPEN_R/SYSTEM/OBJS");
     fs::create_dir_all(&objs_dir).map_err(|e| Error::io(&objs_dir, e))?;
@@ -305,7 +314,7 @@ fn build_system_objects(root: &Path, include: &Path, src: &Path) -> Result<(), E
             let o = build.join(unit.file_stem().unwrap_or_default()).with_extension("o");
             let mut cmd = Command::new(&cxx);
             cmd.args(crate::compile::host_flags(crate::compile::Lang::Cxx, &[]))
-                .args(["-O2", "-g", "-c"])
+                .args(["-O2", "-g", "-c", map])
                 .arg(format!("-I{}", build.display()))
                 .arg(format!("-I{}", source.display()))
                 .arg(format!("-I{}", src.display()))

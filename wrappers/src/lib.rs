@@ -20,6 +20,7 @@ pub mod ldlog;
 mod legacy_notes;
 pub mod mkbin;
 pub mod ocf;
+pub mod sanitize;
 mod repair;
 mod root;
 

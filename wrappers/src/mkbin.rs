@@ -171,7 +171,7 @@ fn link_shared(opts: &Options, root: &Path, snap_o: &Path, tmp: &Path, output: &
     ld.args(["-shared", "-fPIC", "-Wl,-Bsymbolic", "-Wl,-z,defs", "-Wl,--demangle"]);
     ld.arg(format!("-Wl,--wrap={}", WRAPPED.join(",--wrap=")));
     ld.arg(format!("-L{}", root.join("OPEN_R/lib").display()));
-    ld.arg("-o").arg(tmp).arg(snap_o).args(&opts.link_args);
+    ld.arg("-o").arg(tmp).arg(snap_o).args(&opts.link_args).args(crate::sanitize::link_flags()?);
     if opts.default_libs {
         ld.arg("-Wl,--start-group");
         ld.args(DEFAULT_LIBS.iter().map(|l| format!("-l{l}")));

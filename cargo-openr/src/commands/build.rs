@@ -22,6 +22,9 @@ pub struct Args {
     /// Compiler and linker processes at once (default: the number of cores)
     #[arg(short = 'j', long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     jobs: Option<u32>,
+    /// Instrument the C++ objects with a sanitizer; `cargo openr run` then starts the stick with its runtime
+    #[arg(long, value_enum, value_name = "KIND")]
+    sanitize: Option<crate::ops::sanitize::Sanitizer>,
     /// Extra C/C++ compiler flags, e.g. "-DDEBUG -Wall" (also OPENR_CXXFLAGS, openr.toml `cxxflags`)
     #[arg(long, value_name = "FLAGS", allow_hyphen_values = true)]
     cxxflags: Option<String>,
@@ -44,12 +47,17 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let cfg = config::resolve(&inputs)?;
     let root = cfg.sdk.value;
     sdk::prepare(&root)?;
+    let (mut cxxflags, mut ldflags) = (cfg.cxxflags.value, cfg.ldflags.value);
+    if let Some(s) = args.sanitize {
+        cxxflags.extend(s.cxxflags());
+        ldflags.extend(s.ldflags());
+    }
     let opts = BuildOptions {
         dir: args.path.clone(),
         sdk: root,
         release: args.release,
-        cxxflags: cfg.cxxflags.value,
-        ldflags: cfg.ldflags.value,
+        cxxflags,
+        ldflags,
         packages: args.packages,
         jobs: args.jobs.map_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()), |j| j as usize),
         color: shell.color() && args.message_format != MessageFormat::Json,

@@ -160,6 +160,12 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         diag: Diag { quiet: args.quiet, verbose: args.verbose },
         lenient_connect: args.lenient_connect,
     };
+    let sanitizers = crate::ops::sanitize::needed(&ms_dir);
+    if let Some(env) = crate::ops::sanitize::environment(&sanitizers, std::env::var("LD_PRELOAD").ok().as_deref())? {
+        let names: Vec<&str> = sanitizers.iter().map(|s| s.name()).collect();
+        shell.status("Restarting", &format!("with the {} sanitizer runtime preloaded (objects built with --sanitize)", names.join(", ")));
+        return Err(crate::ops::sanitize::reexec(env));
+    }
     shell.status("Running", &ms_dir.display().to_string());
     let outcome = boot::run(&opts).with_context(|| format!("cannot run {}", ms_dir.display()))?;
     let how = match outcome.ended {

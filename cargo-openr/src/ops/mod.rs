@@ -8,5 +8,6 @@ pub mod doctor;
 pub mod env;
 pub mod gcc_diag;
 pub mod new;
+pub mod sanitize;
 pub mod sdk;
 pub mod sim;

@@ -16,6 +16,7 @@ mod net;
 mod peer;
 mod robot;
 mod run;
+mod sanitize;
 mod rust_objects;
 mod rust_robot;
 mod sdk;

@@ -54,9 +54,45 @@ fn exe_range() -> (usize, usize) {
     })
 }
 
+/// The address ranges of a sanitizer runtime preloaded into the process (`cargo openr
+/// run` preloads libasan/libtsan for objects built with `--sanitize`): its own file
+/// accesses (libbacktrace reading the modules to symbolize a report, `/proc/self/maps`)
+/// are the tool's, not an object's, and must not be confined to `/MS`.
+fn sanitizer_ranges() -> &'static [(usize, usize)] {
+    static RANGES: OnceLock<Vec<(usize, usize)>> = OnceLock::new();
+    RANGES.get_or_init(|| {
+        unsafe extern "C" fn each(info: *mut libc::dl_phdr_info, _: usize, out: *mut libc::c_void) -> libc::c_int {
+            // SAFETY: the loader passes a valid entry; `out` is the vector below.
+            let (info, out) = unsafe { (&*info, &mut *out.cast::<Vec<(usize, usize)>>()) };
+            if info.dlpi_name.is_null() {
+                return 0;
+            }
+            // SAFETY: a NUL-terminated module name.
+            let name = unsafe { CStr::from_ptr(info.dlpi_name) }.to_string_lossy();
+            let file = name.rsplit('/').next().unwrap_or("");
+            if !["libasan.so", "libtsan.so", "liblsan.so", "libubsan.so"].iter().any(|l| file.starts_with(l)) {
+                return 0;
+            }
+            for i in 0..info.dlpi_phnum as usize {
+                // SAFETY: dlpi_phnum headers follow dlpi_phdr.
+                let ph = unsafe { &*info.dlpi_phdr.add(i) };
+                if ph.p_type == libc::PT_LOAD {
+                    let start = info.dlpi_addr as usize + ph.p_vaddr as usize;
+                    out.push((start, start + ph.p_memsz as usize));
+                }
+            }
+            0
+        }
+        let mut ranges: Vec<(usize, usize)> = Vec::new();
+        // SAFETY: the callback only pushes onto `ranges`.
+        unsafe { libc::dl_iterate_phdr(Some(each), (&mut ranges as *mut Vec<(usize, usize)>).cast()) };
+        ranges
+    })
+}
+
 fn from_runtime(caller: usize) -> bool {
     let (lo, hi) = exe_range();
-    (lo..hi).contains(&caller)
+    (lo..hi).contains(&caller) || sanitizer_ranges().iter().any(|(lo, hi)| (*lo..*hi).contains(&caller))
 }
 
 /// What to hand to libc for one path argument.
@@ -129,5 +165,6 @@ pub(crate) fn set_errno(e: i32) {
 /// measures the executable before any object runs.
 pub fn keep() -> usize {
     exe_range();
+    sanitizer_ranges();
     fs::keep()
 }
