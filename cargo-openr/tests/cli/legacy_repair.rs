@@ -80,6 +80,9 @@ fn gcc33_code_builds_unmodified_with_a_note_per_repair_and_runs() {
         ("Clock.cc", "int ::GetNowMSec();", "a first declaration with a qualified name `::f`"),
         ("Clock.cc", "int ::GetNowMSec()", "a first declaration with a qualified name `::f`"),
         ("OldCode.cc", "ios::in | ios::nocreate", "the pre-standard open mode `ios::nocreate`"),
+        ("Pixels.c", "((unsigned char*)p)++;", "a cast used as an lvalue"),
+        ("Pixels.c", "*((unsigned char*)row)++ = value;", "a cast used as an lvalue"),
+        ("Pixels.c", "((unsigned char*)row) += step - 1;", "a cast used as an lvalue"),
     ];
     for (file, snippet, class) in expected {
         let line = line_of(file, snippet);
@@ -122,6 +125,7 @@ fn gcc33_code_builds_unmodified_with_a_note_per_repair_and_runs() {
             "OldCode : clip 100 0 1234 max 32767",
             "OldCode : track pan -1.5 tilt 10",
             "OldCode : clock ok",
+            "OldCode : row sum 60",
             "OldCode : servo 3 scaled 42 four 20 servos 1",
             "OldCode : stop",
         ],

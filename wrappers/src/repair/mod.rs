@@ -8,6 +8,7 @@
 //!
 //! Nothing of this runs when g++ accepts the unit the first time.
 mod args;
+mod cast_lvalue;
 mod diag;
 mod rules;
 mod shadow;
@@ -42,24 +43,9 @@ pub(crate) fn attempt(exe: &Path, host: &[&str], args: &[OsString], first: &str)
         log.then(|| eprintln!("[cargo-openr] repair: not a compile of one unit"));
         return None;
     };
-    let cwd = std::env::current_dir().ok()?;
     let dir = PrivateDir::new()?;
-    let root = std::env::current_exe().ok().and_then(|e| crate::root::root_from_exe(&e));
-    let pre = dir.0.join("unit.ii");
-    let run = quiet(exe, host, &args::preprocess(args, unit, &pre));
-    let Some(text) = std::fs::read_to_string(&pre).ok().filter(|_| run.status.success()) else {
-        log.then(|| eprintln!("[cargo-openr] repair: preprocessing failed:\n{}", String::from_utf8_lossy(&run.stderr)));
-        return None;
-    };
-    let graph = shadow::include_graph(&text);
-    let _ = std::fs::remove_file(&pre);
-    let Some(mut shadow) = Shadow::new(&graph, &cwd, root.as_deref(), &dir.0) else {
-        log.then(|| eprintln!("[cargo-openr] repair: cannot read the unit {}", graph.first().map_or("", |n| &n.name)));
-        return None;
-    };
-    // (file, line, column, text): reported in the order of the sources.
-    let mut notes: Vec<(usize, usize, usize, String)> = Vec::new();
-    let mut noted = HashSet::new();
+    let mut shadow = shadow_of(exe, host, args, unit, &dir.0, log)?;
+    let mut notes = Notes::default();
     let mut moves = Moves::default();
     for _ in 0..MAX_ROUNDS {
         shadow.write().ok()?;
@@ -71,36 +57,7 @@ pub(crate) fn attempt(exe: &Path, host: &[&str], args: &[OsString], first: &str)
         if log {
             eprintln!("[cargo-openr] repair round in {}:\n{stderr}", dir.0.display());
         }
-        let mut edits: Vec<Edit> = Vec::new();
-        // Errors after one we do not know may be its consequences, and so may later
-        // errors on a line just repaired: those g++ names as a legacy class are repaired,
-        // the others wait for the next round.
-        let mut lines = HashSet::new();
-        let mut clean = true;
-        for d in diag::errors(&stderr) {
-            let r = match rules::repair(&d, &shadow) {
-                _ if lines.contains(&(d.loc.file.clone(), d.loc.line)) => None,
-                Some(r) if clean || rules::names_its_class(&d.msg) => Some(r),
-                _ => None,
-            };
-            let Some(r) = r else {
-                clean = false;
-                continue;
-            };
-            lines.insert((d.loc.file.clone(), d.loc.line));
-            if log {
-                eprintln!("[cargo-openr] repair {}: {:?} {:?}", d.loc, r.class, r.edits);
-            }
-            if r.edits.iter().any(|e| edits.iter().any(|o| o.file == e.file && o.from < e.to.max(e.from + 1) && e.from < o.to.max(o.from + 1))) {
-                continue;
-            }
-            let loc = diag::Loc { col: moves.original_col(&d.loc), ..d.loc.clone() };
-            if noted.insert(loc.to_string()) {
-                let text = format!("{loc}: note: [cargo-openr] repaired {}: compiled {}, in a private copy (your file is unchanged)", r.class.what(), r.how);
-                notes.push((shadow.find(&loc.file).unwrap_or(0), loc.line, loc.col, text));
-            }
-            edits.extend(r.edits);
-        }
+        let edits = choose(&diag::errors(&stderr), &shadow, &moves, &mut notes, log);
         if edits.is_empty() {
             return None;
         }
@@ -109,8 +66,67 @@ pub(crate) fn attempt(exe: &Path, host: &[&str], args: &[OsString], first: &str)
     None
 }
 
+/// The shadow copies of the unit's user files, from the include tree of a preprocessing run.
+fn shadow_of(exe: &Path, host: &[&str], args: &[OsString], unit: usize, dir: &Path, log: bool) -> Option<Shadow> {
+    let cwd = std::env::current_dir().ok()?;
+    let root = std::env::current_exe().ok().and_then(|e| crate::root::root_from_exe(&e));
+    let pre = dir.join("unit.ii");
+    let run = quiet(exe, host, &args::preprocess(args, unit, &pre));
+    let Some(text) = std::fs::read_to_string(&pre).ok().filter(|_| run.status.success()) else {
+        log.then(|| eprintln!("[cargo-openr] repair: preprocessing failed:\n{}", String::from_utf8_lossy(&run.stderr)));
+        return None;
+    };
+    let _ = std::fs::remove_file(&pre);
+    let graph = shadow::include_graph(&text);
+    let shadow = Shadow::new(&graph, &cwd, root.as_deref(), dir);
+    if shadow.is_none() && log {
+        eprintln!("[cargo-openr] repair: cannot read the unit {}", graph.first().map_or("", |n| &n.name));
+    }
+    shadow
+}
+
+/// The notes of the repairs made: (file, line, column, text), each location once.
+#[derive(Default)]
+struct Notes(Vec<(usize, usize, usize, String)>);
+
+/// The edits of one round. Errors after one we do not know may be its consequences, and
+/// so may later errors on a line just repaired: those g++ names as a legacy class are
+/// repaired, the others wait for the next round.
+fn choose(errors: &[diag::Diag], shadow: &Shadow, moves: &Moves, notes: &mut Notes, log: bool) -> Vec<Edit> {
+    let mut edits: Vec<Edit> = Vec::new();
+    let mut lines = HashSet::new();
+    let mut clean = true;
+    for d in errors {
+        let r = match rules::repair(d, shadow) {
+            _ if lines.contains(&(d.loc.file.clone(), d.loc.line)) => None,
+            Some(r) if clean || rules::names_its_class(&d.msg) => Some(r),
+            _ => None,
+        };
+        let Some(r) = r else {
+            clean = false;
+            continue;
+        };
+        lines.insert((d.loc.file.clone(), d.loc.line));
+        if log {
+            eprintln!("[cargo-openr] repair {}: {:?} {:?}", d.loc, r.class, r.edits);
+        }
+        let overlaps = |e: &Edit| edits.iter().any(|o| o.file == e.file && o.from < e.to.max(e.from + 1) && e.from < o.to.max(o.from + 1));
+        if r.edits.iter().any(overlaps) {
+            continue;
+        }
+        let loc = diag::Loc { col: moves.original_col(&d.loc), ..d.loc.clone() };
+        let file = shadow.find(&loc.file).unwrap_or(0);
+        if !notes.0.iter().any(|n| (n.0, n.1, n.2) == (file, loc.line, loc.col)) {
+            let text = format!("{loc}: note: [cargo-openr] repaired {}: compiled {}, in a private copy (your file is unchanged)", r.class.what(), r.how);
+            notes.0.push((file, loc.line, loc.col, text));
+        }
+        edits.extend(r.edits);
+    }
+    edits
+}
+
 /// The real compile of the repaired shadow unit (stdout is the user's).
-fn finish(exe: &Path, host: &[&str], args: &[OsString], unit: usize, shadow: &Shadow, mut notes: Vec<(usize, usize, usize, String)>) -> Option<Repaired> {
+fn finish(exe: &Path, host: &[&str], args: &[OsString], unit: usize, shadow: &Shadow, mut notes: Notes) -> Option<Repaired> {
     let out = Command::new(exe)
         .args(host)
         .args(args::final_compile(args, unit, &shadow.files[0].path))
@@ -123,8 +139,8 @@ fn finish(exe: &Path, host: &[&str], args: &[OsString], unit: usize, shadow: &Sh
     if let Some(d) = args::depfile(args, unit) {
         shadow.fix_depfile(&d);
     }
-    notes.sort();
-    let mut stderr: String = notes.into_iter().map(|n| n.3 + "\n").collect();
+    notes.0.sort();
+    let mut stderr: String = notes.0.into_iter().map(|n| n.3 + "\n").collect();
     stderr.push_str(&String::from_utf8_lossy(&out.stderr));
     Some(Repaired { stderr, code: out.status.code().unwrap_or(1) })
 }

@@ -8,7 +8,7 @@
 //! `(int)pointer` on LP64, jumps past initialisations.
 use super::diag::{quoted_names, Diag};
 use super::shadow::Shadow;
-use super::text::{has_word, is_ident, statement_start, words, Source};
+pub(crate) use super::text::{has_word, is_ident, statement_start, words, Source};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Class {
@@ -20,6 +20,7 @@ pub(crate) enum Class {
     DuplicateParameter,
     GlobalQualifiedDeclaration,
     IosNocreate,
+    CastAsLvalue,
 }
 
 /// Whether g++'s message names a legacy class itself; otherwise (a name not declared, a
@@ -41,6 +42,7 @@ impl Class {
             Class::DuplicateParameter => "a parameter name repeated in one declaration (accepted by gcc 3.3)",
             Class::GlobalQualifiedDeclaration => "a first declaration with a qualified name `::f` (accepted by gcc 3.3)",
             Class::IosNocreate => "the pre-standard open mode `ios::nocreate` (gcc 3.3's <fstream.h>)",
+            Class::CastAsLvalue => "a cast used as an lvalue (a GNU extension of gcc 3.3, removed in gcc 4.0)",
         }
     }
 }
@@ -75,6 +77,7 @@ pub(crate) fn may_repair(msg: &str) -> bool {
         || m.contains("should have been declared inside '::'")
         || m.starts_with("explicit qualification in declaration of")
         || m.starts_with("'nocreate' is not a member of")
+        || m.starts_with("lvalue required as ")
 }
 
 /// The repair of one error, if it is of a known class.
@@ -130,6 +133,9 @@ pub(crate) fn repair(d: &Diag, shadow: &Shadow) -> Option<Repair> {
     }
     if m.contains("should have been declared inside '::'") || m.starts_with("explicit qualification in declaration of") {
         return global_qualified(src, file, at, names.first()?);
+    }
+    if m.starts_with("lvalue required as ") {
+        return super::cast_lvalue::repair(src, file, at);
     }
     if m.starts_with("'nocreate' is not a member of") && src.ident_at(at) == "nocreate" {
         let how = "with `openmode(0)` for it: no flag (a missing file still fails to open for reading)".to_string();

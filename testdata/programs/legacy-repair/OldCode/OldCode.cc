@@ -12,6 +12,7 @@
 //   Tracker.h      a parameter name repeated in one declaration
 //   Clock.cc       "int ::GetNowMSec();"
 //   OldCode.cc     ios::nocreate
+//   Pixels.c       casts used as lvalues (C, mipsel-linux-gcc)
 //
 // Permissive.h/.cc holds habits that -fpermissive still accepts.
 //
@@ -26,6 +27,7 @@
 #include "Registry.h"
 #include "Gain.h"
 #include "Permissive.h"
+#include "Pixels.h"
 
 int FindFirst(const int* values, int num, int key);
 int CountAbove(const int* values, int num, int limit);
@@ -80,6 +82,10 @@ OldCode::DoStart(const OSystemEvent& event)
     int t0 = GetNowMSec();
     int t1 = GetNowMSec();
     cout << "OldCode : clock " << ((t0 >= 0 && t1 >= t0) ? "ok" : "BROKEN") << endl;
+
+    unsigned char row[8] = { 1, 2, 3, 4, 5, 6, 7, 8 };
+    FillRow(row, 8, 2, 10);
+    cout << "OldCode : row sum " << SumRow(row, 8) << endl;
 
     Servo servo(3);
     Quadrupler<int> quad;
