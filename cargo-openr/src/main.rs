@@ -24,6 +24,8 @@ fn main() -> ExitCode {
     let mut shell = shell::Shell::new();
     match cli::run(args, &mut shell) {
         Ok(()) => ExitCode::SUCCESS,
+        // A child tool (gdb, valgrind) already said what went wrong: pass its status on.
+        Err(e) if e.downcast_ref::<shell::ChildStatus>().is_some() => ExitCode::from(e.downcast_ref::<shell::ChildStatus>().map_or(1, |c| c.0)),
         Err(e) => {
             shell.error(&format!("{e:#}"));
             ExitCode::FAILURE

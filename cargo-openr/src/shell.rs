@@ -87,3 +87,16 @@ impl Shell {
         let _ = writeln!(std::io::stdout(), "{line}");
     }
 }
+
+/// The exit status of a child tool the command ran in the foreground (gdb, valgrind),
+/// which `main` passes on without a message of its own.
+#[derive(Debug)]
+pub struct ChildStatus(pub u8);
+
+impl std::fmt::Display for ChildStatus {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "the tool exited with status {}", self.0)
+    }
+}
+
+impl std::error::Error for ChildStatus {}

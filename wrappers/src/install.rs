@@ -32,6 +32,21 @@ pub const STAMP: &str = ".cargo-openr-sdk";
 /// Where the MuJoCo simulator (peer.py, ers7.xml, scene.xml, …) lives in an SDK root.
 pub const SIM_DIR: &str = "sim/mujoco";
 
+/// Valgrind suppressions for the runtime itself (`cargo openr run --valgrind` passes them).
+pub const VALGRIND_SUPP: &str = "share/valgrind/cargo-openr.supp";
+const VALGRIND_SUPP_TEXT: &str = include_str!("../share/cargo-openr.supp");
+
+/// gdb commands for a run under `cargo openr run --gdb`.
+pub const GDB_INIT: &str = "share/gdb/cargo-openr.gdb";
+const GDB_INIT_TEXT: &str = "\
+# Written by cargo openr sdk install; `cargo openr run --gdb` loads it.
+# Objects are loaded after the process starts: breakpoints on them wait for the load.
+set breakpoint pending on
+# SIGUSR1 is the robot's pause button (robot-api 9.3), not a fault.
+handle SIGUSR1 nostop noprint pass
+set print pretty on
+";
+
 /// What `install` did.
 #[derive(Debug, PartialEq, Eq)]
 pub enum Outcome {
@@ -166,6 +181,7 @@ fn build_tree(root: &Path, final_root: &Path, exe: &[u8], stamp: &str) -> Result
     write_files(&include, sdk_files::INCLUDE)?;
     write_files(&src, sdk_files::CXX)?;
     write_files(&root.join(SIM_DIR), sdk_files::SIM)?;
+    write_files(root, &[(VALGRIND_SUPP, VALGRIND_SUPP_TEXT.as_bytes()), (GDB_INIT, GDB_INIT_TEXT.as_bytes())])?;
     install_tools(root, exe)?;
     build_archives(root, &include, &src, &map)?;
     build_system_objects(root, &include, &src, &map)?;

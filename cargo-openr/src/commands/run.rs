@@ -9,6 +9,7 @@ use sdk_runtime::boot::{self, Ended, RunOptions};
 use sdk_runtime::runtime::Diag;
 
 use crate::ops::config::{self, ConfigInputs};
+use crate::ops::debugger::{self, Debugger};
 use crate::ops::{sdk, sim};
 use crate::shell::Shell;
 
@@ -41,6 +42,15 @@ pub struct Args {
     /// Base tree of the SDK root laid under MS_DIR, as a robot's stick has it: BASIC, WLAN or WCONSOLE, optionally /memprot or /nomemprot, or none (default WCONSOLE/nomemprot; see `cargo openr config`)
     #[arg(long, value_name = "KIND[/PROT]")]
     base: Option<String>,
+    /// Run under gdb (pending breakpoints on, the pause signal passed; see README "Debugging")
+    #[arg(long, conflicts_with = "valgrind")]
+    gdb: bool,
+    /// Run under valgrind with the runtime's suppressions: memcheck (default), helgrind, drd, …
+    #[arg(long, value_name = "TOOL", num_args = 0..=1, default_missing_value = "memcheck", require_equals = true)]
+    valgrind: Option<String>,
+    /// An argument for the tool of --gdb / --valgrind (repeatable), e.g. --tool-arg=-batch
+    #[arg(long = "tool-arg", value_name = "ARG", allow_hyphen_values = true)]
+    tool_args: Vec<String>,
     /// Skip CONNECT.CFG lines that name unknown services (the robot's behaviour) instead of failing
     #[arg(long)]
     lenient_connect: bool,
@@ -160,6 +170,15 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         diag: Diag { quiet: args.quiet, verbose: args.verbose },
         lenient_connect: args.lenient_connect,
     };
+    if let Some(tool) = args.gdb.then_some(Debugger::Gdb).or_else(|| args.valgrind.clone().map(Debugger::Valgrind)) {
+        let mut cmd = debugger::command(&tool, &root, &args.tool_args, &["--gdb", "--valgrind", "--tool-arg"])?;
+        let status = cmd.status().with_context(|| format!("cannot start {:?}", cmd.get_program()))?;
+        // The tool's status is the run's (memcheck's error exit, gdb's, the runtime's).
+        return match status.code() {
+            Some(0) => Ok(()),
+            code => Err(crate::shell::ChildStatus(code.and_then(|c| u8::try_from(c).ok()).unwrap_or(1)).into()),
+        };
+    }
     let sanitizers = crate::ops::sanitize::needed(&ms_dir);
     if let Some(env) = crate::ops::sanitize::environment(&sanitizers, std::env::var("LD_PRELOAD").ok().as_deref())? {
         let names: Vec<&str> = sanitizers.iter().map(|s| s.name()).collect();

@@ -5,6 +5,7 @@ mod camera;
 mod clock;
 mod confine;
 mod corpus;
+mod debugging;
 mod devloop;
 mod front;
 mod legacy_c;
