@@ -22,6 +22,10 @@ pub(crate) enum Lang {
 /// * `-Dasm(...)=`: MIPS inline assembly (e.g. `asm("mfc0 $2, $12")`) cannot run on the
 ///   host; glibc and libstdc++ spell theirs `__asm__`, which stays intact.
 /// * `-fcommon` (C): gcc 10 made tentative definitions in headers a link error.
+/// * `-fsanitize=alignment`: the robot's MIPS CPU faults on a misaligned load or store,
+///   x86 does not; the check calls libmcoopstub's handler, which faults the object when
+///   the robot would have (`OPENR_ALIGNMENT_TRAP=0`, or `-fno-sanitize=alignment` in the
+///   user's flags, turns it off).
 pub(crate) fn host_flags(lang: Lang, user: &[OsString]) -> Vec<&'static str> {
     let has_std = user.iter().any(|a| a.to_string_lossy().starts_with("-std="));
     let mut flags = Vec::new();
@@ -37,6 +41,9 @@ pub(crate) fn host_flags(lang: Lang, user: &[OsString]) -> Vec<&'static str> {
         flags.push("-fcommon");
     }
     flags.extend(["-fPIC", "-Dasm(...)="]);
+    if std::env::var_os("OPENR_ALIGNMENT_TRAP").map_or(true, |v| v != "0") {
+        flags.push("-fsanitize=alignment");
+    }
     flags
 }
 

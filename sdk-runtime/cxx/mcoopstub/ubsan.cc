@@ -1,0 +1,80 @@
+// ubsan.cc - the alignment trap of mipsel-linux-g++ (-fsanitize=alignment).
+//
+// The robot's MIPS CPU faults on a load or store that is not aligned to its size (an
+// address error exception); x86 quietly does it.  gcc checks every such access and
+// calls the handler below with the source position and the type.  The handler faults
+// the object (SIGBUS, with a note for the runtime's crash report) when the robot would
+// have: a word at most needs 4-byte alignment there (LP64's 8-byte long and pointers
+// are 4-byte words on the robot), a double 8 (ldc1/sdc1).  Otherwise it returns and
+// the access goes ahead.
+#include <pthread.h>
+#include <signal.h>
+#include <stdio.h>
+
+namespace {
+
+// gcc's (libsanitizer's) data layout for the type-mismatch check.
+struct SourceLocation {
+    const char*  file;
+    unsigned int line;
+    unsigned int column;
+};
+
+struct TypeDescriptor {
+    unsigned short kind;    // 0 integer, 1 float, 0xffff other
+    unsigned short info;    // float: its width in bits
+    char           name[1];
+};
+
+struct TypeMismatchData {
+    SourceLocation        loc;
+    const TypeDescriptor* type;
+    unsigned char         logAlignment;
+    unsigned char         typeCheckKind;
+};
+
+const char* const checkKinds[] = {
+    "load of", "store to", "reference binding to", "member access within",
+    "member call on", "constructor call on", "downcast of", "downcast of",
+    "upcast of", "cast to virtual base of",
+};
+
+// One note per object (each object links its own copy); the process ends after it.
+char note[768];
+
+unsigned long robotAlignment(const TypeDescriptor* type, unsigned long hostAlignment)
+{
+    if (type->kind == 1 && type->info == 64) return 8;
+    return hostAlignment < 4 ? hostAlignment : 4;
+}
+
+void check(const TypeMismatchData* data, unsigned long pointer)
+{
+    if (pointer == 0) return;   // NULL is -fsanitize=null's business, not enabled
+    unsigned long need = robotAlignment(data->type, 1UL << data->logAlignment);
+    if ((pointer & (need - 1)) == 0) return;
+    unsigned int k = data->typeCheckKind;
+    snprintf(note, sizeof(note),
+             "%s address %#lx for type %s, which the robot's CPU needs %lu-byte aligned, at %s:%u:%u",
+             k < sizeof(checkKinds) / sizeof(checkKinds[0]) ? checkKinds[k] : "access to",
+             pointer, data->type->name, need, data->loc.file, data->loc.line, data->loc.column);
+    union sigval value;
+    value.sival_ptr = note;
+    pthread_sigqueue(pthread_self(), SIGBUS, value);
+}
+
+} // namespace
+
+extern "C" {
+
+void __ubsan_handle_type_mismatch_v1(const TypeMismatchData* data, unsigned long pointer)
+{
+    check(data, pointer);
+}
+
+void __ubsan_handle_type_mismatch_v1_abort(const TypeMismatchData* data, unsigned long pointer)
+{
+    check(data, pointer);
+}
+
+} // extern "C"
