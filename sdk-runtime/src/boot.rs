@@ -53,6 +53,8 @@ pub struct RunOptions {
     /// External robot peers: where they attach, whether to wait for one
     /// (docs/robot-protocol.md).
     pub peers: crate::peer::PeerOptions,
+    /// Object threads trap on FP errors like the robot's CPU (off: `--no-fp-traps`).
+    pub fp_traps: bool,
 }
 
 /// How a run went.
@@ -119,7 +121,9 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     };
 
     let signals = crate::signals::block_termination()?;
+    crate::console::input::take_over_stdin();
     crate::crash::install();
+    crate::crash::set_fp_traps(opts.fp_traps);
     // Objects' printf/cout go through C stdio: line-buffer it like a console.
     unsafe { libc::setvbuf(crate::console::stdout_file(), std::ptr::null_mut(), libc::_IOLBF, 0) };
     std::hint::black_box(crate::host_api::api_table());
@@ -196,14 +200,21 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     rt.diag.info(&format!("shutting down ({ended:?}): Stop, then Destroy"));
     for sel in [SEL_STOP, SEL_DESTROY] {
         for slot in &all {
-            if !slot.is_stopped() {
+            if crate::console::input::waits_for_input(slot.index) {
+                // Single-threaded, it cannot take a message while it waits (the robot's
+                // objects neither): no Stop/Destroy, no timeout to wait out.
+                if sel == SEL_STOP {
+                    rt.diag.info(&format!("object `{}` waits for console input: not stopped", slot.name()));
+                }
+            } else if !slot.is_stopped() {
                 let _ = hook(rt, slot, sel, OREASON_SHUTDOWN, Some(SHUTDOWN_TIMEOUT));
             }
         }
     }
     rt.vr.flush_trace();
     rt.vr.peers.close_all(&format!("the run ended ({ended:?})"));
-    unsafe { libc::fflush(std::ptr::null_mut()) };
+    // stdout only: fflush(NULL) would wait for stdin's lock, held by a blocked reader.
+    unsafe { libc::fflush(crate::console::stdout_file()) };
     let load = |c: &std::sync::atomic::AtomicU64| c.load(std::sync::atomic::Ordering::Relaxed);
     Ok(Outcome { ended, frames: load(&rt.vr.frames), late_frames: load(&rt.vr.late_frames) })
 }
@@ -239,7 +250,7 @@ fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path
         .name(thread_name)
         .spawn(move || {
             object::set_current(worker.clone());
-            crate::crash::alt_stack();
+            crate::crash::arm_thread();
             match Module::load(&host, &image, index) {
                 Ok(m) => {
                     let _ = worker.module.set(m);

@@ -60,6 +60,9 @@ thread_local! {
     static PENDING_REPLY: RefCell<Option<SyncSender<Vec<u8>>>> = const { RefCell::new(None) };
     /// Object index and selector being run, read by the crash handler.
     pub(crate) static RUNNING: Cell<(usize, u32)> = const { Cell::new((usize::MAX, u32::MAX)) };
+    /// `CURRENT` as a plain pointer: the crash handler reads it without touching the
+    /// `RefCell` or the `Arc` (the slot outlives the thread).
+    pub(crate) static CURRENT_SLOT: Cell<*const ObjectSlot> = const { Cell::new(std::ptr::null()) };
 }
 
 pub fn current() -> Option<Arc<ObjectSlot>> {
@@ -68,6 +71,8 @@ pub fn current() -> Option<Arc<ObjectSlot>> {
 
 pub(crate) fn set_current(slot: Arc<ObjectSlot>) {
     RUNNING.with(|r| r.set((slot.index, u32::MAX)));
+    crate::console::input::register_thread(slot.index);
+    CURRENT_SLOT.with(|c| c.set(Arc::as_ptr(&slot)));
     CURRENT.with(|c| *c.borrow_mut() = Some(slot));
 }
 
@@ -100,6 +105,7 @@ pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(
         env.data.resize(env.data.len() + 64, 0);
         unsafe { entry(env.data.as_mut_ptr().cast()) };
         RUNNING.with(|r| r.set((slot.index, u32::MAX)));
+        crate::console::input::handled(slot.index);
         // A call whose entry returned without Reply/Return gets an empty answer, so the
         // caller is never left waiting forever.
         reply_current(&[]);

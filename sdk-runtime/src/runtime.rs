@@ -115,12 +115,14 @@ impl Runtime {
         enqueue(&slot, Envelope { selector, data, reply: None })
     }
 
-    /// Whether every object is idle (nothing queued or running) and the boot sequence is
-    /// not between two steps — or an object waits for virtual time to pass.
+    /// Whether every object is idle (nothing queued or running, or blocked on console
+    /// input) and the boot sequence is not between two steps — or an object waits for
+    /// virtual time to pass.
     pub fn quiescent(&self) -> bool {
         let objects = self.objects.read().unwrap_or_else(|p| p.into_inner());
         let sleeping = objects.iter().any(|s| s.sleeping.load(Ordering::Acquire));
-        objects.iter().all(|s| s.is_idle()) && (sleeping || !self.booting.load(Ordering::Acquire))
+        let idle = |s: &Arc<ObjectSlot>| s.is_idle() || crate::console::input::blocked_reading(s.index);
+        objects.iter().all(idle) && (sleeping || !self.booting.load(Ordering::Acquire))
     }
 
     /// Sends and waits for the answer (`Call`), at most `timeout` if given.

@@ -96,6 +96,9 @@ pub struct Args {
     /// Host address the robot's network endpoints bind to (default 127.0.0.1)
     #[arg(long, value_name = "ADDR")]
     net_bind: Option<std::net::Ipv4Addr>,
+    /// Do not trap on floating-point errors (invalid operation, division by zero, overflow, denormal operand) as the robot's CPU does
+    #[arg(long)]
+    no_fp_traps: bool,
     /// Add N to every port the robot binds (privileged ports first move to 10000+port), so two robots can run one program
     #[arg(long, value_name = "N", default_value_t = 0)]
     port_offset: u16,
@@ -169,6 +172,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         run_for: args.run_for,
         diag: Diag { quiet: args.quiet, verbose: args.verbose },
         lenient_connect: args.lenient_connect,
+        fp_traps: !args.no_fp_traps,
     };
     if let Some(tool) = args.gdb.then_some(Debugger::Gdb).or_else(|| args.valgrind.clone().map(Debugger::Valgrind)) {
         let mut cmd = debugger::command(&tool, &root, &args.tool_args, &["--gdb", "--valgrind", "--tool-arg"])?;
@@ -289,7 +293,7 @@ fn simulate(args: &Args, world: &[Robot], root: &Path, shell: &mut Shell) -> any
         }
         opt("--net-bind", Some(robot.ip.to_string().into()));
         opt("--port-offset", (args.port_offset != 0).then(|| args.port_offset.to_string().into()));
-        for (on, flag) in [(args.lenient_connect, "--lenient-connect"), (args.quiet, "--quiet"), (args.verbose, "--verbose")] {
+        for (on, flag) in [(args.lenient_connect, "--lenient-connect"), (args.no_fp_traps, "--no-fp-traps"), (args.quiet, "--quiet"), (args.verbose, "--verbose")] {
             if on {
                 a.push(flag.into());
             }

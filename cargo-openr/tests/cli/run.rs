@@ -218,6 +218,125 @@ fn a_crashing_object_is_reported_with_its_entry_and_backtrace() {
     }
 }
 
+/// Runs the crash program's fault `fault` (its CRASH.CFG) on an already built copy.
+fn commit_fault(p: &crate::support::Built, fault: u32, extra: &[&str]) -> RunOutput {
+    fs::write(p.ms().join("OPEN-R/MW/CONF/CRASH.CFG"), format!("{fault}\n")).unwrap();
+    let mut args = vec!["--for", "2s", "--speed", "max"];
+    args.extend_from_slice(extra);
+    run_ms(&p.ms(), &args)
+}
+
+#[test]
+fn floating_point_errors_fault_the_object_as_on_the_robot() {
+    let p = build("crash");
+    for (fault, kind) in [
+        (7, "FP exception: invalid operation"),
+        (8, "FP exception: invalid operation"),
+        (9, "FP exception: invalid operation"),
+        (10, "FP exception: division by zero"),
+        (11, "FP exception: overflow"),
+        (12, "FP exception: denormal operand"),
+    ] {
+        let out = commit_fault(&p, fault, &[]);
+        assert_eq!(out.code, Some(128 + 8), "fault {fault}: SIGFPE\n{}\n{}", out.stdout, out.stderr);
+        let header = out.stderr.lines().find(|l| l.starts_with("error: object `crash`")).unwrap_or_default();
+        assert!(header.contains(&format!("crashed with SIGFPE: {kind}")) && header.contains("in entry StartEntry"), "fault {fault}:\n{}", out.stderr);
+        assert!(out.stderr.contains("Crash::CommitFault(int)"), "demangled frame of the object:\n{}", out.stderr);
+        assert!(!out.stdout.contains("survived"), "{}", out.stdout);
+        // --no-fp-traps: the PC's quiet NaN / infinity / garbage instead
+        let off = commit_fault(&p, fault, &["--no-fp-traps"]);
+        assert_eq!(off.code, Some(0), "fault {fault} with --no-fp-traps:\n{}", off.stderr);
+        assert!(off.stdout.contains(&format!("Crash : survived fault {fault}")), "{}", off.stdout);
+    }
+    // The C library on an object thread does not trip the traps: NaN and infinity print.
+    let out = commit_fault(&p, 18, &[]);
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stdout.contains("Crash : printf nan -inf 1.000000e-300 3.142\n"), "{}", out.stdout);
+    assert!(out.stdout.contains("Crash : cout nan -inf 1e-300 2.5\n"), "{}", out.stdout);
+    assert!(out.stdout.contains("Crash : math 0.8415 7.3891 0.4636\n"), "{}", out.stdout);
+}
+
+#[test]
+fn a_misaligned_access_faults_where_the_robot_would() {
+    let p = build("crash");
+    let out = commit_fault(&p, 13, &[]);
+    assert_eq!(out.code, Some(128 + 7), "SIGBUS\n{}\n{}", out.stdout, out.stderr);
+    assert!(out.stderr.contains("crashed with SIGBUS: misaligned access in entry StartEntry"), "{}", out.stderr);
+    assert!(out.stderr.contains("for type 'volatile int', which the robot's CPU needs 4-byte aligned, at Crash.cc:"), "{}", out.stderr);
+    // Built without the check (OPENR_ALIGNMENT_TRAP=0), the PC does the access.
+    let (ok, log) = crate::support::run(std::process::Command::new("make")
+        .env("OPENR_ALIGNMENT_TRAP", "0")
+        .arg(format!("OPENRSDK_ROOT={}", crate::support::sdk_root().display()))
+        .args(["clean", "install"])
+        .current_dir(p.dir.path().join("crash")));
+    assert!(ok, "{log}");
+    let out = commit_fault(&p, 13, &[]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    assert!(out.stdout.contains("Crash : misaligned word = 42"), "{}", out.stdout);
+}
+
+#[test]
+fn stack_smash_double_free_and_own_threads_are_reported() {
+    let p = build("crash");
+    // A return through a smashed frame (default wrapper flags: no stack protector).
+    let out = commit_fault(&p, 14, &[]);
+    assert_eq!(out.code, Some(128 + 11), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stderr.contains("error: object `crash` (/MS/OPEN-R/MW/OBJS/CRASH.BIN) crashed with SIGSEGV"), "{}", out.stderr);
+    assert!(!out.stdout.contains("survived"), "{}", out.stdout);
+    // glibc detects the double free and aborts inside malloc: the report must not hang
+    // on malloc's lock (run_ms kills a run after 60 s of real time: a safety net only).
+    let out = commit_fault(&p, 15, &[]);
+    assert_eq!(out.code, Some(128 + 6), "{}\n{}", out.stdout, out.stderr);
+    let header = out.stderr.lines().position(|l| l.starts_with("error: object `crash`") && l.contains("SIGABRT: abort in entry StartEntry"));
+    assert!(header.is_some(), "{}", out.stderr);
+    assert!(out.stderr.contains("double free detected"), "glibc's own message is kept:\n{}", out.stderr);
+    assert!(out.stderr.contains("__libc_free") && out.stderr.contains("Crash::DoStart"), "backtrace through free:\n{}", out.stderr);
+    // Endless recursion: reported from the alternate signal stack.
+    let out = commit_fault(&p, 6, &[]);
+    assert_eq!(out.code, Some(128 + 11), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stderr.contains("crashed with SIGSEGV: stack overflow"), "{}", out.stderr);
+    // A fault in a pthread the object started names the object.
+    let out = commit_fault(&p, 17, &[]);
+    assert_eq!(out.code, Some(128 + 11), "{}\n{}", out.stdout, out.stderr);
+    assert!(
+        out.stderr.contains("error: object `crash` (/MS/OPEN-R/MW/OBJS/CRASH.BIN) crashed with SIGSEGV: invalid memory access (unmapped address) in a thread the object started"),
+        "{}",
+        out.stderr
+    );
+}
+
+#[test]
+fn underscore_exit_in_an_object_is_reported_and_flushes_the_console() {
+    let p = build("crash");
+    let out = commit_fault(&p, 16, &[]);
+    assert_eq!(out.code, Some(3), "the object's status\n{}\n{}", out.stdout, out.stderr);
+    assert!(out.stdout.ends_with("Crash : this line has no newline yet..."), "pending stdout flushed:\n{}", out.stdout);
+    assert!(out.stderr.contains("error: object `crash` (/MS/OPEN-R/MW/OBJS/CRASH.BIN) called _exit(3)"), "{}", out.stderr);
+}
+
+#[test]
+fn console_input_never_ends_a_reader_waits_and_the_run_ends_at_for() {
+    let p = build("console-read");
+    let conf = p.ms().join("OPEN-R/MW/CONF/READER.CFG");
+    for (style, said) in [("gets", "line"), ("cin", "word")] {
+        fs::write(&conf, format!("{style}\n")).unwrap();
+        // stdin closed (/dev/null): one prompt, then the object waits
+        let out = run_ms(&p.ms(), &["--for", "2s", "--speed", "max"]);
+        assert_eq!(out.code, Some(0), "{style}: {}\n{}", out.stdout, out.stderr);
+        assert!(out.stderr.contains("time limit reached; 250 frames"), "{style}: virtual time went on:\n{}", out.stderr);
+        assert_eq!(out.stdout, format!("ConsoleRead : reading the console with {style}\nConsoleRead > "), "{style}: no flood");
+        // a short file: the prompts for the lines given plus one
+        let input: &[(std::time::Duration, &[u8])] = &[(std::time::Duration::ZERO, b"one\ntwo\n")];
+        let out = crate::support::run_ms_with_stdin(&p.ms(), &["--for", "2s", "--speed", "max"], input);
+        assert_eq!(out.code, Some(0), "{style}: {}\n{}", out.stdout, out.stderr);
+        let want = format!(
+            "ConsoleRead : reading the console with {style}\nConsoleRead > ConsoleRead : {said} 1: one\nConsoleRead > ConsoleRead : {said} 2: two\nConsoleRead > "
+        );
+        assert_eq!(out.stdout, want, "{style}");
+        assert!(!out.stderr.contains("did not answer"), "a waiting reader costs no Stop timeout:\n{}", out.stderr);
+    }
+}
+
 #[test]
 fn a_crash_keeps_what_other_objects_printed() {
     // HELLO (built with -DOPENR_DEBUG: prints in DoInit) and CRASH on one stick.

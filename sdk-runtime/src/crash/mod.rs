@@ -1,22 +1,57 @@
 //! A crashing object (SIGSEGV, SIGBUS, SIGFPE, SIGILL, abort) gets a report naming the
-//! object, the entry it was running and a symbolised backtrace; then the runtime exits
-//! non-zero. The report is best effort — a crash inside malloc could deadlock it — so an
-//! alarm ends the process if reporting itself hangs.
-use std::ffi::{c_void, CStr};
+//! object, the entry it was running, what the robot's CPU would have done and a
+//! backtrace; then the runtime exits with 128 + the signal number.
+//!
+//! The handler cannot fail: it allocates nothing (a crash inside malloc — a double free
+//! — must not deadlock it), writes the header line before anything else, runs on a
+//! per-thread alternate stack (a stack overflow is reported too) and an alarm ends the
+//! process should the backtrace hang anyway. Object threads also trap on floating-point
+//! errors like the robot's R4000 under Aperios (`fp_traps`).
+use std::cell::Cell;
+use std::ffi::c_void;
 use std::fmt::Write as _;
+use std::sync::atomic::{AtomicBool, Ordering};
 
-use crate::object::RUNNING;
-use crate::runtime::Runtime;
+use crate::object::{ObjectSlot, CURRENT_SLOT, RUNNING};
+
+mod exits;
+mod frames;
+mod out;
+
+pub use exits::{exit_now, fault_note_from};
+use out::{fault_kind, signal_name, CText, Out, BUFFER};
 
 const SIGNALS: [libc::c_int; 5] = [libc::SIGSEGV, libc::SIGBUS, libc::SIGFPE, libc::SIGILL, libc::SIGABRT];
 const ALT_STACK: usize = 256 * 1024;
+/// `RUNNING` selector of a thread an object started itself (pthread_create).
+pub const OWN_THREAD: u32 = u32::MAX - 1;
+
+static FP_TRAPS: AtomicBool = AtomicBool::new(true);
+static FIRST_SIGNAL: std::sync::atomic::AtomicI32 = std::sync::atomic::AtomicI32::new(0);
+
+thread_local! {
+    /// This thread's stack (low, high), to tell a stack overflow from other faults.
+    static STACK: Cell<(usize, usize)> = const { Cell::new((0, 0)) };
+    static IN_HANDLER: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Whether object threads trap on FP errors (`--no-fp-traps` turns it off). Set before
+/// the objects load.
+pub fn set_fp_traps(on: bool) {
+    FP_TRAPS.store(on, Ordering::Release);
+}
 
 /// Installs the fault handlers for the whole process.
 pub fn install() {
+    frames::warm_up();
+    exits::remember_pid();
+    std::hint::black_box(exits::keep());
     unsafe {
         let mut sa: libc::sigaction = std::mem::zeroed();
         sa.sa_sigaction = on_fault as *const () as usize;
-        sa.sa_flags = libc::SA_SIGINFO | libc::SA_ONSTACK | libc::SA_RESETHAND;
+        // SA_NODEFER: a fault while reporting (unwinding a smashed stack) re-enters the
+        // handler, which then ends the process, instead of the kernel killing it.
+        sa.sa_flags = libc::SA_SIGINFO | libc::SA_ONSTACK | libc::SA_NODEFER;
         libc::sigemptyset(&mut sa.sa_mask);
         for s in SIGNALS {
             libc::sigaction(s, &sa, std::ptr::null_mut());
@@ -24,95 +59,121 @@ pub fn install() {
     }
 }
 
-/// Gives the calling thread an alternate signal stack, so a stack overflow in an object
-/// can still be reported. The stack is leaked: object threads live until exit.
-pub fn alt_stack() {
+/// Prepares the calling thread to run object code: an alternate signal stack (leaked:
+/// object threads live until exit), its stack bounds, and the robot's FP traps.
+pub fn arm_thread() {
     let mem = vec![0u8; ALT_STACK].leak();
     let st = libc::stack_t { ss_sp: mem.as_mut_ptr().cast(), ss_flags: 0, ss_size: ALT_STACK };
     unsafe { libc::sigaltstack(&st, std::ptr::null_mut()) };
-}
-
-fn signal_name(sig: libc::c_int) -> &'static str {
-    match sig {
-        libc::SIGSEGV => "SIGSEGV (invalid memory access)",
-        libc::SIGBUS => "SIGBUS (misaligned or bad memory access)",
-        libc::SIGFPE => "SIGFPE (arithmetic exception)",
-        libc::SIGILL => "SIGILL (illegal instruction)",
-        libc::SIGABRT => "SIGABRT (abort)",
-        _ => "signal",
+    STACK.with(|s| s.set(stack_bounds()));
+    if FP_TRAPS.load(Ordering::Acquire) {
+        enable_fp_traps();
     }
 }
 
-/// Name of the symbol containing `addr`, from the dynamic symbol tables (what is left
-/// after `strip`).
-fn dl_name(addr: *mut c_void) -> Option<(String, String)> {
-    let mut info: libc::Dl_info = unsafe { std::mem::zeroed() };
-    if unsafe { libc::dladdr(addr, &mut info) } == 0 {
-        return None;
-    }
-    let s = |p: *const libc::c_char| if p.is_null() { String::new() } else { unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned() };
-    Some((s(info.dli_sname), s(info.dli_fname)))
-}
-
-extern "C" fn on_fault(sig: libc::c_int, info: *mut libc::siginfo_t, _ctx: *mut c_void) {
-    unsafe { libc::alarm(10) };
-    let (index, selector) = RUNNING.with(|r| r.get());
-    let mut report = String::new();
-    let slot = Runtime::get().and_then(|rt| rt.all_objects().get(index).cloned());
-    match &slot {
-        Some(slot) => {
-            let entry = slot
-                .module
-                .get()
-                .and_then(|m| m.entry(selector))
-                .and_then(|f| dl_name(f as *mut c_void))
-                .map(|(n, _)| n)
-                .filter(|n| !n.is_empty());
-            let what = match (selector, entry) {
-                (u32::MAX, _) => "outside any entry (loading or static constructors)".to_string(),
-                (s, Some(n)) => format!("entry {n} (selector {s})"),
-                (s, None) => format!("selector {s}"),
-            };
-            let _ = writeln!(report, "error: object `{}` ({}) crashed with {} in {what}", slot.name(), slot.bin, signal_name(sig));
-        }
-        None => {
-            let _ = writeln!(report, "error: the cargo-openr runtime crashed with {} (not inside an object)", signal_name(sig));
-        }
-    }
-    if matches!(sig, libc::SIGSEGV | libc::SIGBUS) && !info.is_null() {
-        let _ = writeln!(report, "  fault address: {:p}", unsafe { (*info).si_addr() });
-    }
-    let _ = writeln!(report, "backtrace:");
-    let mut n = 0;
-    backtrace::trace(|frame| {
-        let ip = frame.ip();
-        let mut line = format!("  {n:2}: {ip:p}");
-        let mut named = false;
-        backtrace::resolve_frame(frame, |sym| {
-            if named {
-                return;
-            }
-            if let Some(name) = sym.name() {
-                let _ = write!(line, " {name:#}");
-                named = true;
-            }
-            if let (Some(f), Some(l)) = (sym.filename(), sym.lineno()) {
-                let _ = write!(line, " at {}:{l}", f.display());
-            }
-        });
-        if !named {
-            if let Some((name, file)) = dl_name(ip) {
-                let _ = write!(line, " {} ({})", if name.is_empty() { "??" } else { &name }, file);
-            }
-        }
-        report.push_str(&line);
-        report.push('\n');
-        n += 1;
-        n < 64
-    });
+fn stack_bounds() -> (usize, usize) {
     unsafe {
-        libc::fflush(std::ptr::null_mut());
-        libc::write(2, report.as_ptr().cast(), report.len());
-        libc::_exit(128 + sig);
+        let mut attr: libc::pthread_attr_t = std::mem::zeroed();
+        if libc::pthread_getattr_np(libc::pthread_self(), &mut attr) != 0 {
+            return (0, 0);
+        }
+        let (mut base, mut size) = (std::ptr::null_mut(), 0);
+        libc::pthread_attr_getstack(&attr, &mut base, &mut size);
+        libc::pthread_attr_destroy(&mut attr);
+        (base as usize, base as usize + size)
     }
+}
+
+extern "C" {
+    fn feenableexcept(excepts: libc::c_int) -> libc::c_int;
+}
+
+/// The R4000 faults the object on an invalid operation (0/0, sqrt(-1), NaN compares,
+/// float→int out of range: SSE's cvttsd2si raises invalid there), division by zero,
+/// overflow and a denormal operand (x86's DM, masked by feenableexcept's interface, is
+/// unmasked in MXCSR directly).
+fn enable_fp_traps() {
+    const FE_INVALID: libc::c_int = 0x01;
+    const FE_DIVBYZERO: libc::c_int = 0x04;
+    const FE_OVERFLOW: libc::c_int = 0x08;
+    const MXCSR_DM: u32 = 1 << 8;
+    unsafe {
+        feenableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
+        let mut csr: u32 = 0;
+        std::arch::asm!("stmxcsr [{}]", in(reg) &mut csr, options(nostack));
+        csr &= !MXCSR_DM;
+        std::arch::asm!("ldmxcsr [{}]", in(reg) &csr, options(nostack));
+    }
+}
+
+/// The object whose code this thread runs, if any (no allocation, no lock).
+fn current_slot() -> Option<&'static ObjectSlot> {
+    let p = CURRENT_SLOT.with(|c| c.get());
+    // SAFETY: slots live until the process exits (the runtime holds them).
+    (!p.is_null()).then(|| unsafe { &*p })
+}
+
+extern "C" fn on_fault(sig: libc::c_int, info: *mut libc::siginfo_t, ctx: *mut c_void) {
+    if IN_HANDLER.with(|h| h.replace(true)) {
+        out::write_all(2, b"  (the backtrace ends here: walking the stack faulted)\n");
+        exits::flush_console();
+        exit_now(128 + FIRST_SIGNAL.load(Ordering::Acquire));
+    }
+    FIRST_SIGNAL.store(sig, Ordering::Release);
+    let Some(mut out) = BUFFER.claim() else {
+        // Another thread is reporting; it ends the process.
+        loop {
+            unsafe { libc::pause() };
+        }
+    };
+    unsafe { libc::alarm(10) };
+    let uc = ctx as *const libc::ucontext_t;
+    let pc = if uc.is_null() { 0 } else { unsafe { (*uc).uc_mcontext.gregs[libc::REG_RIP as usize] as usize } };
+    let mxcsr = unsafe { uc.as_ref().and_then(|u| u.uc_mcontext.fpregs.as_ref()).map(|f| f.mxcsr) };
+    let (code, addr) = if info.is_null() { (0, 0) } else { unsafe { ((*info).si_code, (*info).si_addr() as usize) } };
+    let note = unsafe { fault_note_from(sig, info) };
+    let stack = STACK.with(|s| s.get());
+    let overflow = sig == libc::SIGSEGV && stack.0 != 0 && addr < stack.0 + 4096 && addr + (1 << 20) > stack.0;
+    let kind = match () {
+        _ if overflow => "stack overflow (endless recursion or a huge local array)",
+        _ if note.is_some() => "misaligned access",
+        _ => fault_kind(sig, code, mxcsr),
+    };
+    header(&mut out, sig, kind);
+    out.flush();
+    if let Some(n) = note {
+        let _ = writeln!(out, "  {}", CText(n));
+    }
+    if matches!(sig, libc::SIGSEGV | libc::SIGBUS) && note.is_none() {
+        let _ = writeln!(out, "  fault address: {addr:#x}");
+    }
+    if code == libc::SI_TKILL || code == libc::SI_USER {
+        let _ = writeln!(out, "  (raised by the program: kill/raise/abort)");
+    }
+    let _ = writeln!(out, "backtrace:");
+    out.flush();
+    let (ips, n) = frames::collect(pc);
+    for (i, ip) in ips[..n].iter().enumerate() {
+        frames::write_frame(&mut out, i, *ip, true);
+        out.flush();
+    }
+    exits::flush_console();
+    exit_now(128 + sig);
+}
+
+/// `error: object `X` (BIN) crashed with SIGFPE: <kind> in entry E (selector S)`.
+fn header(out: &mut Out, sig: i32, kind: &str) {
+    let (_, selector) = RUNNING.with(|r| r.get());
+    let Some(slot) = current_slot() else {
+        let _ = writeln!(out, "error: the cargo-openr runtime crashed with {}: {kind} (not inside an object)", signal_name(sig));
+        return;
+    };
+    let _ = write!(out, "error: object `{}` ({}) crashed with {}: {kind} ", slot.name(), slot.bin, signal_name(sig));
+    let entry = slot.module.get().and_then(|m| m.entry(selector)).and_then(|f| frames::place(f as usize));
+    let _ = match (selector, entry) {
+        (u32::MAX, _) => writeln!(out, "outside any entry (loading or static constructors)"),
+        (OWN_THREAD, _) => writeln!(out, "in a thread the object started (pthread_create)"),
+        (s, Some(p)) if !p.info.dli_sname.is_null() => writeln!(out, "in entry {} (selector {s})", CText(p.info.dli_sname)),
+        (s, _) => writeln!(out, "in selector {s}"),
+    };
 }

@@ -9,6 +9,10 @@
 // without including <stdio.h>; the OPEN-R headers make them visible.
 //
 
+#include <math.h>
+#include <pthread.h>
+#include <unistd.h>
+#include <iostream>
 #include <OPENR/OSyslog.h>
 #include "Crash.h"
 
@@ -22,6 +26,18 @@ static const char* const faultName[] = {
     "unusable coprocessor",
     "write to read-only shared memory",
     "endless recursion",
+    "float to int overflow",
+    "FP invalid operation (0/0)",
+    "sqrt of a negative number",
+    "FP divide by zero",
+    "FP overflow",
+    "FP denormal operand",
+    "misaligned access",
+    "stack smash",
+    "double free",
+    "_exit(3)",
+    "NULL pointer write in a thread of its own",
+    "print floats (no fault)",
 };
 static const int NUM_FAULTS = sizeof(faultName) / sizeof(faultName[0]);
 
@@ -82,6 +98,114 @@ recurse_forever(int depth)
     volatile char frame[512];
     frame[0] = (char)depth;
     return recurse_forever(depth + 1) + frame[0];
+}
+
+// Floating point: on the robot's R4000 each of these is a CPU exception that
+// stops the object; a PC quietly goes on with NaN, infinity or garbage.
+// volatile keeps the compiler from doing the arithmetic at compile time.
+
+static int
+float_to_int_overflow()
+{
+    volatile double big = 1e20;
+    return (int)big;
+}
+
+static double
+fp_invalid()
+{
+    volatile double zero = 0.0;
+    return zero / zero;
+}
+
+static double
+sqrt_negative()
+{
+    volatile double minusOne = -1.0;
+    return sqrt(minusOne);
+}
+
+static double
+fp_divide_by_zero()
+{
+    volatile double zero = 0.0;
+    return 1.0 / zero;
+}
+
+static double
+fp_overflow()
+{
+    volatile double big = 1e300;
+    return big * big;
+}
+
+static double
+fp_denormal_operand()
+{
+    volatile double tiny = 1e-310;      // below DBL_MIN: a denormal
+    return tiny * 2.0;
+}
+
+static int
+misaligned_access()
+{
+    static int words[4];
+    volatile int* p = (int*)((char*)words + 2);
+    *p = 42;                    // address error (store) on the robot
+    return *p;
+}
+
+static void
+copy_name(char* to, const char* from)
+{
+    while ((*to++ = *from++) != 0) {
+    }
+}
+
+// noinline: its own stack frame, with its return address right above name[].
+static void __attribute__((noinline))
+smash_stack()
+{
+    char name[8];
+    copy_name(name, "a name much too long for the eight bytes of its buffer: it runs over "
+                    "the saved registers and the return address of this function");
+    printf("Crash : name %s\n", name);
+}
+
+static void
+double_free()
+{
+    char* volatile p = (char*)malloc(32);  // volatile: the pair is not optimised away
+    free(p);
+    free(p);
+}
+
+static void*
+thread_body(void*)
+{
+    null_pointer_write();
+    return 0;
+}
+
+static void
+fault_in_own_thread()
+{
+    pthread_t t;
+    pthread_create(&t, 0, thread_body, 0);
+    pthread_join(t, 0);
+}
+
+static void
+print_floats()
+{
+    // NaN and infinity made without arithmetic (strtod), then printed both
+    // ways: the C library must not trip the FP traps.  (A denormal would: any
+    // FP instruction on one faults on the robot, printf's included.)
+    double nan = strtod("nan", 0);
+    double inf = strtod("-inf", 0);
+    printf("Crash : printf %f %g %e %.3f\n", nan, inf, 1e-300, 3.14159);
+    std::cout << "Crash : cout " << nan << " " << inf << " " << 1e-300 << " " << 2.5 << std::endl;
+    printf("Crash : math %.4f %.4f %.4f\n", sin(1.0), exp(2.0), atan2(1.0, 2.0));
 }
 
 Crash::Crash()
@@ -173,6 +297,43 @@ Crash::CommitFault(int fault)
         break;
     case 6:
         printf("Crash : %d\n", recurse_forever(0));
+        break;
+    case 7:
+        printf("Crash : (int)1e20 = %d\n", float_to_int_overflow());
+        break;
+    case 8:
+        printf("Crash : 0.0 / 0.0 = %f\n", fp_invalid());
+        break;
+    case 9:
+        printf("Crash : sqrt(-1) = %f\n", sqrt_negative());
+        break;
+    case 10:
+        printf("Crash : 1.0 / 0.0 = %f\n", fp_divide_by_zero());
+        break;
+    case 11:
+        printf("Crash : 1e300 * 1e300 = %f\n", fp_overflow());
+        break;
+    case 12:
+        printf("Crash : 1e-310 * 2 = %g\n", fp_denormal_operand());
+        break;
+    case 13:
+        printf("Crash : misaligned word = %d\n", misaligned_access());
+        break;
+    case 14:
+        smash_stack();
+        break;
+    case 15:
+        double_free();
+        break;
+    case 16:
+        printf("Crash : this line has no newline yet...");
+        _exit(3);
+        break;
+    case 17:
+        fault_in_own_thread();
+        break;
+    case 18:
+        print_floats();
         break;
     }
 }

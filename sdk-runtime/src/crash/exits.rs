@@ -1,0 +1,150 @@
+//! How an object can end the process without a signal, and threads it starts itself.
+//! The runtime executable exports these (see cargo-openr's build.rs), so the objects'
+//! calls bind here first:
+//! * `_exit` / `_Exit`: on the robot an object cannot end the system. Here it ends the
+//!   run, but never silently: the object is named, the console's pending output is
+//!   flushed, and the exit status is non-zero (the object's, or 1 for `_exit(0)`).
+//! * `pthread_create`: a thread started by object code runs as that object (its faults
+//!   are reported with the object's name, it gets an alternate stack and FP traps).
+use std::ffi::c_void;
+use std::fmt::Write as _;
+use std::sync::OnceLock;
+
+use super::out::BUFFER;
+
+/// The runtime's pid: a forked child calling `_exit` is not an object.
+static PID: OnceLock<libc::pid_t> = OnceLock::new();
+
+pub(super) fn remember_pid() {
+    PID.get_or_init(|| unsafe { libc::getpid() });
+}
+
+fn in_runtime_process() -> bool {
+    PID.get().is_some_and(|p| *p == unsafe { libc::getpid() })
+}
+
+/// Ends the process now (no atexit handlers, no C++ destructors of running objects).
+pub fn exit_now(code: i32) -> ! {
+    unsafe { libc::syscall(libc::SYS_exit_group, code as libc::c_long) };
+    unreachable!("exit_group returned")
+}
+
+extern "C" {
+    fn ftrylockfile(f: *mut libc::FILE) -> libc::c_int;
+    fn funlockfile(f: *mut libc::FILE);
+    fn fflush_unlocked(f: *mut libc::FILE) -> libc::c_int;
+}
+
+/// Writes out what objects' printf/cout left in stdout's buffer, unless another thread
+/// holds stdout's lock for longer than a moment (then that output is lost, not the run).
+pub fn flush_console() {
+    let stdout = crate::console::stdout_file();
+    for _ in 0..100 {
+        if unsafe { ftrylockfile(stdout) } == 0 {
+            unsafe {
+                fflush_unlocked(stdout);
+                funlockfile(stdout);
+            }
+            return;
+        }
+        unsafe { libc::usleep(1000) };
+    }
+}
+
+/// The note the alignment check (libmcoopstub's `__ubsan_handle_type_mismatch_v1`) sent
+/// with its SIGBUS (`sigqueue`: `si_value` points at the text).
+///
+/// # Safety
+/// `info` is the handler's siginfo.
+pub unsafe fn fault_note_from(sig: i32, info: *const libc::siginfo_t) -> Option<*const libc::c_char> {
+    if sig != libc::SIGBUS || info.is_null() || unsafe { (*info).si_code } != libc::SI_QUEUE {
+        return None;
+    }
+    if unsafe { (*info).si_pid() } != unsafe { libc::getpid() } {
+        return None;
+    }
+    let p = unsafe { (*info).si_value().sival_ptr } as *const libc::c_char;
+    (!p.is_null()).then_some(p)
+}
+
+fn object_exit(status: i32) -> ! {
+    if in_runtime_process() {
+        if let Some(slot) = super::current_slot() {
+            flush_console();
+            if let Some(mut out) = BUFFER.claim() {
+                let _ = writeln!(
+                    out,
+                    "error: object `{}` ({}) called _exit({status}): the robot has no process to end; the run stops here",
+                    slot.name(),
+                    slot.bin,
+                );
+                out.flush();
+            }
+            exit_now(if status != 0 { status } else { 1 });
+        }
+    }
+    exit_now(status)
+}
+
+#[no_mangle]
+pub extern "C" fn _exit(status: libc::c_int) -> ! {
+    object_exit(status)
+}
+
+#[no_mangle]
+pub extern "C" fn _Exit(status: libc::c_int) -> ! {
+    object_exit(status)
+}
+
+type StartFn = extern "C" fn(*mut c_void) -> *mut c_void;
+type CreateFn = unsafe extern "C" fn(*mut libc::pthread_t, *const libc::pthread_attr_t, StartFn, *mut c_void) -> libc::c_int;
+
+fn real_pthread_create() -> CreateFn {
+    static REAL: OnceLock<usize> = OnceLock::new();
+    let p = *REAL.get_or_init(|| unsafe { libc::dlsym(libc::RTLD_NEXT, c"pthread_create".as_ptr()) } as usize);
+    assert!(p != 0, "libc's pthread_create not found");
+    // SAFETY: libc's pthread_create has this signature.
+    unsafe { std::mem::transmute::<usize, CreateFn>(p) }
+}
+
+struct Adopted {
+    slot: std::sync::Arc<crate::object::ObjectSlot>,
+    start: StartFn,
+    arg: *mut c_void,
+}
+
+extern "C" fn adopted_start(p: *mut c_void) -> *mut c_void {
+    // SAFETY: boxed by pthread_create below, for this thread only.
+    let a = unsafe { Box::from_raw(p as *mut Adopted) };
+    let index = a.slot.index;
+    crate::object::set_current(a.slot);
+    crate::object::RUNNING.with(|r| r.set((index, super::OWN_THREAD)));
+    super::arm_thread();
+    (a.start)(a.arg)
+}
+
+/// # Safety
+/// Same contract as libc's `pthread_create`.
+#[no_mangle]
+pub unsafe extern "C" fn pthread_create(thread: *mut libc::pthread_t, attr: *const libc::pthread_attr_t, start: StartFn, arg: *mut c_void) -> libc::c_int {
+    let real = real_pthread_create();
+    // Threads the runtime starts (Rust std's start routine lives in this executable)
+    // stay the runtime's, even when started from an object's thread.
+    let from_object = crate::object::current().filter(|_| super::frames::place(start as usize).is_some_and(|p| !p.is_main_program()));
+    match from_object {
+        Some(slot) => {
+            let boxed = Box::into_raw(Box::new(Adopted { slot, start, arg }));
+            let r = unsafe { real(thread, attr, adopted_start, boxed.cast()) };
+            if r != 0 {
+                drop(unsafe { Box::from_raw(boxed) });
+            }
+            r
+        }
+        None => unsafe { real(thread, attr, start, arg) },
+    }
+}
+
+/// Keeps the interposers in the final link (referenced from the boot code).
+pub fn keep() -> usize {
+    _exit as *const () as usize ^ _Exit as *const () as usize ^ pthread_create as *const () as usize
+}
