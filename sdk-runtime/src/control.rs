@@ -9,8 +9,10 @@
 //! | `speed <factor\|max>` | change the speed | `ok` |
 //! | `shutdown` | the Stop/Destroy sequence, as OPENR::Shutdown | `ok` |
 //!
-//! Anything else gets `error: …`. Several clients may be connected at once.
-use std::io::{BufRead, BufReader, Write};
+//! Anything else gets `error: …`, a line that is not UTF-8 too; a line longer than
+//! 1024 bytes gets an error and the connection is closed. Several clients may be
+//! connected at once.
+use std::io::{BufRead, BufReader, Read, Write};
 use std::os::unix::net::{UnixListener, UnixStream};
 use std::path::Path;
 use std::time::Duration;
@@ -34,11 +36,30 @@ pub fn serve(rt: &'static Runtime, path: &Path) -> Result<()> {
     Ok(())
 }
 
+/// Longest command line taken; a longer one is answered with an error and the
+/// connection closed (a client cannot make the runtime buffer without bound).
+const MAX_LINE: usize = 1024;
+
 fn client(rt: &'static Runtime, conn: UnixStream) {
     let Ok(mut out) = conn.try_clone() else { return };
-    for line in BufReader::new(conn).lines() {
-        let Ok(line) = line else { return };
-        let answer = command(rt, line.trim());
+    // A client that does not read its answers cannot hold this thread for ever.
+    let _ = out.set_write_timeout(Some(Duration::from_secs(5)));
+    let mut input = BufReader::new(conn);
+    loop {
+        let mut line = Vec::new();
+        match (&mut input).take(MAX_LINE as u64 + 1).read_until(b'\n', &mut line) {
+            Ok(0) | Err(_) => return,
+            Ok(_) => {}
+        }
+        let complete = line.last() == Some(&b'\n');
+        if !complete && line.len() > MAX_LINE {
+            let _ = writeln!(out, "error: command line longer than {MAX_LINE} bytes (connection closed)");
+            return;
+        }
+        let answer = match std::str::from_utf8(&line) {
+            Ok(text) => command(rt, text.trim()),
+            Err(e) => format!("error: the command line is not UTF-8 text (invalid byte at {})", e.valid_up_to()),
+        };
         if writeln!(out, "{answer}").is_err() {
             return;
         }

@@ -99,6 +99,9 @@ pub struct Args {
     /// Do not trap on floating-point errors (invalid operation, division by zero, overflow, denormal operand) as the robot's CPU does
     #[arg(long)]
     no_fp_traps: bool,
+    /// Send what the robot addresses to ROBOT_IP[:PORT] to HOST_IP[:PORT] instead, e.g. 10.0.1.2=127.0.0.1 for a program with its server's LAN address built in (repeatable)
+    #[arg(long = "net-map", value_name = "ROBOT=HOST", value_parser = sdk_runtime::net::config::parse_addr_map)]
+    net_map: Vec<sdk_runtime::net::config::AddrMap>,
     /// Add N to every port the robot binds (privileged ports first move to 10000+port), so two robots can run one program
     #[arg(long, value_name = "N", default_value_t = 0)]
     port_offset: u16,
@@ -154,7 +157,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     if args.sim == Sim::Mujoco {
         return simulate(&args, &world, &root, shell);
     }
-    sdk_runtime::net::config::apply_cli(args.net_bind, args.port_offset);
+    sdk_runtime::net::config::apply_cli(args.net_bind, args.port_offset, &args.net_map);
     let ms_base = base_tree(&root, &cfg.design.value, &cfg.base.value)?;
     let opts = RunOptions {
         ms_base,
@@ -293,6 +296,9 @@ fn simulate(args: &Args, world: &[Robot], root: &Path, shell: &mut Shell) -> any
         }
         opt("--net-bind", Some(robot.ip.to_string().into()));
         opt("--port-offset", (args.port_offset != 0).then(|| args.port_offset.to_string().into()));
+        for m in &args.net_map {
+            opt("--net-map", Some(m.to_string().into()));
+        }
         for (on, flag) in [(args.lenient_connect, "--lenient-connect"), (args.no_fp_traps, "--no-fp-traps"), (args.quiet, "--quiet"), (args.verbose, "--verbose")] {
             if on {
                 a.push(flag.into());

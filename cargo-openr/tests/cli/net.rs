@@ -239,6 +239,39 @@ fn tcp_client_talks_to_a_host_echo_server() {
     assert_eq!(count(&out.stdout, "EchoClient : connect error 8"), 1, "TCP_PORT_UNREACHABLE:\n{}", out.stdout);
 }
 
+#[test]
+fn net_map_sends_a_built_in_lan_address_to_a_host_server() {
+    let built = build("lan-client");
+    let ms = built.ms();
+    let server = TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = server.local_addr().unwrap().port();
+    let echo = std::thread::spawn(move || {
+        let (mut s, _) = server.accept().unwrap();
+        s.set_read_timeout(Some(Duration::from_secs(20))).unwrap();
+        let mut records = Vec::new();
+        for _ in 0..3 {
+            let rec = read_exact_n(&mut s, 25);
+            s.write_all(&rec).unwrap();
+            records.push(rec);
+        }
+        records
+    });
+    let map = format!("10.0.1.2:54321=127.0.0.1:{port}");
+    let out = run_ms(&ms, &["--for", "4s", "--net-map", &map]);
+    for rec in echo.join().unwrap() {
+        assert_eq!(rec, b"This is a test message.\n\0");
+    }
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    // the robot still sees the address it asked for
+    assert!(out.stdout.contains("EchoClient : connecting to 10.0.1.2:54321"), "{}", out.stdout);
+    assert!(out.stdout.contains(" to 10.0.1.2:54321"), "{}", out.stdout);
+    assert!(out.stdout.contains("EchoClient : round 3 : 25 bytes : This is a test message."), "{}\n{}", out.stdout, out.stderr);
+    // a malformed map is refused before the run
+    let out = run_ms(&ms, &["--for", "1s", "--net-map", "10.0.1.2"]);
+    assert_eq!(out.code, Some(2), "{}", out.stderr);
+    assert!(out.stderr.contains("`10.0.1.2`: expected ROBOT_IP=HOST_IP or ROBOT_IP:PORT=HOST_IP:PORT"), "{}", out.stderr);
+}
+
 /// A tiny DNS server for the robot: A records, one CNAME, the PTR of 127.0.0.1.
 fn dns_server() -> (u16, std::thread::JoinHandle<usize>) {
     let sock = UdpSocket::bind("127.0.0.1:0").unwrap();

@@ -479,3 +479,57 @@ fn role_payload_order_and_overflow_errors_name_the_problem() {
         assert!(out.stderr.contains(&line), "stderr lacks {line:?}:\n{}", out.stderr);
     }
 }
+
+#[test]
+fn a_peer_that_stops_reading_is_dropped_and_the_run_reaches_its_end() {
+    let b = build("movelegs");
+    let dir = tempfile::tempdir().unwrap();
+    let sock = dir.path().join("robot.sock");
+    let run = spawn_ms(&b.ms(), &["--speed", "max", "--for", "600s", "--robot-socket", sock.to_str().unwrap()], &[]);
+    // HELLO, WELCOME, then this peer never reads again: its FRAMEs pile up
+    let (silent, _) = attach(&sock, 0, 0);
+    let out = run.wait(Duration::from_secs(120));
+    drop(silent);
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stderr.contains("time limit reached; 75000 frames"), "virtual time went on: {}", out.stderr);
+    assert!(out.stderr.contains("warning: robot peer `test` dropped after frame ") && out.stderr.contains("it stopped reading"), "{}", out.stderr);
+}
+
+#[test]
+fn shutdown_ends_a_run_whose_peers_stopped_reading_and_bad_control_lines_get_an_error() {
+    let b = build("movelegs");
+    let dir = tempfile::tempdir().unwrap();
+    let sock = dir.path().join("robot.sock");
+    let ctl = dir.path().join("control.sock");
+    let run = spawn_ms(&b.ms(), &["--speed", "max", "--robot-socket", sock.to_str().unwrap(), "--control", ctl.to_str().unwrap()], &[]);
+    let (silent, _) = attach(&sock, 0, 0);
+    // the clock owner too: it neither reads its FRAMEs nor answers them
+    let (owner, _) = attach(&sock, ROLE_JOINTS, FLAG_CLOCK);
+    let mut c = connect_unix(&ctl, Duration::from_secs(60));
+    c.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    // a line that is not UTF-8 is answered, and the connection stays usable
+    c.write_all(b"sta\xfftus\n").unwrap();
+    let mut answers = std::io::BufReader::new(c.try_clone().unwrap());
+    let mut line = String::new();
+    std::io::BufRead::read_line(&mut answers, &mut line).unwrap();
+    assert_eq!(line, "error: the command line is not UTF-8 text (invalid byte at 3)\n");
+    line.clear();
+    c.write_all(b"status\n").unwrap();
+    std::io::BufRead::read_line(&mut answers, &mut line).unwrap();
+    assert!(line.starts_with("ok t_ms="), "{line}");
+    // an endless line is cut off
+    let mut long = connect_unix(&ctl, Duration::from_secs(60));
+    long.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    let _ = long.write_all(&vec![b'x'; 64 << 10]);
+    let mut rest = String::new();
+    let _ = long.read_to_string(&mut rest);
+    assert_eq!(rest, "error: command line longer than 1024 bytes (connection closed)\n");
+    line.clear();
+    c.write_all(b"shutdown\n").unwrap();
+    std::io::BufRead::read_line(&mut answers, &mut line).unwrap();
+    assert_eq!(line, "ok\n");
+    let out = run.wait(Duration::from_secs(60));
+    drop((silent, owner));
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stderr.contains("OPENR::Shutdown"), "{}", out.stderr);
+}

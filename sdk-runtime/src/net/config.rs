@@ -10,6 +10,46 @@ pub const ENV_BIND: &str = "OPENR_NET_BIND";
 pub const ENV_PORT_OFFSET: &str = "OPENR_NET_PORT_OFFSET";
 /// Explicit remaps, `robot=host` pairs separated by commas (`21=2121,123=40123`).
 pub const ENV_PORT_MAP: &str = "OPENR_NET_PORT_MAP";
+/// Destination address map (`--net-map`), entries separated by commas:
+/// `10.0.1.2=127.0.0.1` or `10.0.1.2:54321=127.0.0.1:6000`.
+pub const ENV_ADDR_MAP: &str = "OPENR_NET_ADDR_MAP";
+
+/// One `--net-map` entry: connections and datagrams the robot sends to `robot` (all
+/// ports, or `robot_port` only) go to `host` (its port, or `host_port`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct AddrMap {
+    pub robot: u32,
+    pub robot_port: Option<u16>,
+    pub host: u32,
+    pub host_port: Option<u16>,
+}
+
+/// Parses one `--net-map` entry; the error says what was expected.
+pub fn parse_addr_map(s: &str) -> Result<AddrMap, String> {
+    let bad = || format!("`{s}`: expected ROBOT_IP=HOST_IP or ROBOT_IP:PORT=HOST_IP:PORT (e.g. 10.0.1.2=127.0.0.1)");
+    let (a, b) = s.trim().split_once('=').ok_or_else(bad)?;
+    let side = |t: &str| -> Result<(u32, Option<u16>), String> {
+        match t.split_once(':') {
+            Some((ip, port)) => Ok((parse_ip(ip).ok_or_else(bad)?, Some(port.trim().parse::<u16>().ok().filter(|p| *p != 0).ok_or_else(bad)?))),
+            None => Ok((parse_ip(t).ok_or_else(bad)?, None)),
+        }
+    };
+    let ((robot, robot_port), (host, host_port)) = (side(a)?, side(b)?);
+    if robot_port.is_none() && host_port.is_some() {
+        return Err(format!("`{s}`: a host port needs a robot port (ROBOT_IP:PORT=HOST_IP:PORT)"));
+    }
+    Ok(AddrMap { robot, robot_port, host, host_port })
+}
+
+impl std::fmt::Display for AddrMap {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let side = |ip: u32, port: Option<u16>| match port {
+            Some(p) => format!("{}:{p}", Ipv4Addr::from(ip)),
+            None => Ipv4Addr::from(ip).to_string(),
+        };
+        write!(f, "{}={}", side(self.robot, self.robot_port), side(self.host, self.host_port))
+    }
+}
 
 /// Where a privileged robot port lands by default: 10000 + port (21 → 10021).
 pub const PRIVILEGED_BASE: u32 = 10000;
@@ -20,6 +60,7 @@ pub struct NetConfig {
     pub bind: u32,
     pub offset: u32,
     pub map: HashMap<u16, u16>,
+    pub addr_map: Vec<AddrMap>,
     pub quiet: bool,
     announced: Mutex<HashSet<(u16, u16, &'static str)>>,
 }
@@ -32,7 +73,10 @@ impl NetConfig {
             .map_or(u32::from(Ipv4Addr::LOCALHOST), u32::from);
         let offset = std::env::var(ENV_PORT_OFFSET).ok().and_then(|s| s.trim().parse().ok()).unwrap_or(0);
         let map = std::env::var(ENV_PORT_MAP).map(|s| parse_port_map(&s)).unwrap_or_default();
-        NetConfig { bind, offset, map, quiet, announced: Mutex::new(HashSet::new()) }
+        let addr_map = std::env::var(ENV_ADDR_MAP)
+            .map(|s| s.split(',').filter(|e| !e.trim().is_empty()).filter_map(|e| parse_addr_map(e).ok()).collect())
+            .unwrap_or_default();
+        NetConfig { bind, offset, map, addr_map, quiet, announced: Mutex::new(HashSet::new()) }
     }
 
     /// The host port for a robot port: explicit map, else privileged ports moved to
@@ -77,6 +121,36 @@ impl NetConfig {
         host
     }
 
+    /// Host address and port of a destination the robot names: the `--net-map` entry
+    /// for it (a port-specific one first), then the loopback port remap.
+    pub fn remote(&self, addr: u32, port: u16, what: &'static str) -> (u32, u16) {
+        let entry = self.addr_map.iter().find(|m| m.robot == addr && m.robot_port == Some(port)).or_else(|| self.addr_map.iter().find(|m| m.robot == addr && m.robot_port.is_none()));
+        match entry {
+            Some(m) => match m.host_port {
+                Some(hp) => (m.host, hp),
+                None => (m.host, self.remote_port(m.host, port, what)),
+            },
+            None => (addr, self.remote_port(addr, port, what)),
+        }
+    }
+
+    /// The robot's view of a peer (inverse of `remote`): a mapped host is reported
+    /// as the robot address it stands for.
+    pub fn robot_peer(&self, addr: u32, port: u16) -> (u32, u16) {
+        for m in &self.addr_map {
+            match (m.robot_port, m.host_port) {
+                (Some(rp), Some(hp)) if m.host == addr && hp == port => return (m.robot, rp),
+                (Some(rp), None) if m.host == addr && self.remote_port(addr, rp, "") == port => return (m.robot, rp),
+                _ => {}
+            }
+        }
+        let robot_port = self.robot_peer_port(addr, port);
+        match self.addr_map.iter().find(|m| m.host == addr && m.robot_port.is_none()) {
+            Some(m) => (m.robot, robot_port),
+            None => (addr, robot_port),
+        }
+    }
+
     /// The robot's view of a peer's port (inverse of `remote_port`).
     pub fn robot_peer_port(&self, addr: u32, port: u16) -> u16 {
         if !super::sys::is_loopback(addr) {
@@ -111,9 +185,13 @@ impl NetConfig {
     }
 }
 
-/// `cargo openr run --net-bind ADDR --port-offset N`: hands the settings to the
-/// IPStack (which reads them when it starts) through the environment.
-pub fn apply_cli(bind: Option<Ipv4Addr>, port_offset: u16) {
+/// `cargo openr run --net-bind ADDR --port-offset N --net-map …`: hands the settings
+/// to the IPStack (which reads them when it starts) through the environment.
+pub fn apply_cli(bind: Option<Ipv4Addr>, port_offset: u16, addr_map: &[AddrMap]) {
+    if !addr_map.is_empty() {
+        let list: Vec<String> = addr_map.iter().map(|m| m.to_string()).collect();
+        std::env::set_var(ENV_ADDR_MAP, list.join(","));
+    }
     if let Some(a) = bind {
         std::env::set_var(ENV_BIND, a.to_string());
     }
@@ -177,7 +255,7 @@ mod tests {
     use super::*;
 
     fn cfg(offset: u32, map: &str) -> NetConfig {
-        NetConfig { bind: 0x7f000001, offset, map: parse_port_map(map), quiet: true, announced: Mutex::new(HashSet::new()) }
+        NetConfig { bind: 0x7f000001, offset, map: parse_port_map(map), addr_map: Vec::new(), quiet: true, announced: Mutex::new(HashSet::new()) }
     }
 
     #[test]
@@ -194,6 +272,23 @@ mod tests {
         assert_eq!(c.robot_peer_port(0x7f000001, 40123), 123);
         assert_eq!(c.robot_peer_port(0x7f000001, 10053), 53);
         assert_eq!(c.robot_peer_port(0x7f000001, 45000), 45000);
+    }
+
+    #[test]
+    fn address_map() {
+        let mut c = cfg(0, "");
+        c.addr_map = vec![parse_addr_map("10.0.1.2:5000=127.0.0.1:6000").unwrap(), parse_addr_map("10.0.1.2=127.0.0.1").unwrap()];
+        assert_eq!(c.remote(0x0a000102, 5000, "t"), (0x7f000001, 6000));
+        assert_eq!(c.remote(0x0a000102, 54321, "t"), (0x7f000001, 54321));
+        assert_eq!(c.remote(0x0a000102, 21, "t"), (0x7f000001, 10021), "then the loopback remap");
+        assert_eq!(c.remote(0x0a000103, 54321, "t"), (0x0a000103, 54321), "unmapped: unchanged");
+        assert_eq!(c.robot_peer(0x7f000001, 6000), (0x0a000102, 5000));
+        assert_eq!(c.robot_peer(0x7f000001, 54321), (0x0a000102, 54321));
+        assert_eq!(c.robot_peer(0x7f000002, 54321), (0x7f000002, 54321));
+        for bad in ["10.0.1.2", "10.0.1.2=", "x=127.0.0.1", "10.0.1.2:0=127.0.0.1:1", "10.0.1.2=127.0.0.1:6000", "10.0.1.2:70000=127.0.0.1"] {
+            assert!(parse_addr_map(bad).is_err(), "{bad}");
+        }
+        assert_eq!(parse_addr_map(" 10.0.1.2:5000=127.0.0.1:6000").unwrap().to_string(), "10.0.1.2:5000=127.0.0.1:6000");
     }
 
     #[test]

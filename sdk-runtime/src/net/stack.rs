@@ -576,8 +576,7 @@ fn tcp_op(st: &mut State, cfg: &NetConfig, p: Pending) {
             let mut r = NetResult::new(&req, tcp::SUCCESS);
             r.laddr = la;
             r.lport = if t.robot_lport != 0 { t.robot_lport.into() } else { lp.into() };
-            r.faddr = fa;
-            r.fport = cfg.robot_peer_port(fa, fp).into();
+            (r.faddr, r.fport) = robot_peer(cfg, fa, fp);
             p.complete(r)
         }
         _ => p.fail(tcp::OPERATION_UNKNOWN),
@@ -655,8 +654,7 @@ fn accept_ready(st: &mut State, cfg: &NetConfig, key: (u32, u16)) {
         let mut r = NetResult::new(&p.req, tcp::SUCCESS);
         r.laddr = la;
         r.lport = t.robot_lport.into();
-        r.faddr = fa;
-        r.fport = cfg.robot_peer_port(fa, fp).into();
+        (r.faddr, r.fport) = robot_peer(cfg, fa, fp);
         p.complete(r);
     }
 }
@@ -688,10 +686,10 @@ fn tcp_connect(st: &mut State, cfg: &NetConfig, id: u32, p: Pending) {
             eprintln!("net: cannot connect from robot port {robot_lport}; using an ephemeral port");
         }
     }
-    let dport = cfg.remote_port(req.addr, req.port as u16, "TCP connect");
+    let (daddr, dport) = cfg.remote(req.addr, req.port as u16, "TCP connect");
     let t = st.tcp(id).unwrap();
     t.robot_lport = reported_lport;
-    match sys::connect(fd.as_raw_fd(), req.addr, dport) {
+    match sys::connect(fd.as_raw_fd(), daddr, dport) {
         Ok(done) => {
             t.fd = Some(fd);
             t.phase = TcpPhase::Connecting;
@@ -718,14 +716,14 @@ fn tcp_progress(st: &mut State, id: u32) {
             0 => {
                 t.phase = TcpPhase::Active;
                 let (la, lp) = sys::local_addr(fd);
-                let (fa, _) = sys::peer_addr(fd);
                 let mut r = NetResult::new(&p.req, tcp::SUCCESS);
                 r.laddr = la;
                 r.lport = if t.robot_lport != 0 { t.robot_lport.into() } else { lp.into() };
                 if t.robot_lport == 0 {
                     t.robot_lport = lp;
                 }
-                r.faddr = fa;
+                // The robot's view: the address it connected to (before --net-map).
+                r.faddr = p.req.addr;
                 r.fport = p.req.port;
                 p.complete(r);
             }
@@ -902,7 +900,8 @@ fn udp_op(st: &mut State, cfg: &NetConfig, p: Pending) {
                 if req.addr == 0 {
                     return p.fail(udp::ADDRESSERROR);
                 }
-                sys::connect(fd, req.addr, cfg.remote_port(req.addr, req.port as u16, "UDP connect")).map(|_| ())
+                let (a, port) = cfg.remote(req.addr, req.port as u16, "UDP connect");
+                sys::connect(fd, a, port).map(|_| ())
             } else {
                 sys::disconnect(fd)
             };
@@ -931,7 +930,7 @@ fn udp_op(st: &mut State, cfg: &NetConfig, p: Pending) {
             } else if req.addr == 0 || req.port == 0 {
                 return p.fail(udp::ADDRESSERROR);
             } else {
-                Some((req.addr, cfg.remote_port(req.addr, req.port as u16, "UDP send")))
+                Some(cfg.remote(req.addr, req.port as u16, "UDP send"))
             };
             u.send = Some((p, req.buffer as usize, req.size as usize, to));
             udp_progress(st, cfg, id);
@@ -984,8 +983,7 @@ fn udp_op(st: &mut State, cfg: &NetConfig, p: Pending) {
             r.lport = u.robot_lport.into();
             if u.connected {
                 let (fa, fp) = sys::peer_addr(fd.as_raw_fd());
-                r.faddr = fa;
-                r.fport = cfg.robot_peer_port(fa, fp).into();
+                (r.faddr, r.fport) = robot_peer(cfg, fa, fp);
             }
             p.complete(r)
         }
@@ -1016,8 +1014,7 @@ fn udp_progress(st: &mut State, cfg: &NetConfig, id: u32) {
             let (p, ..) = u.recv.take().unwrap();
             let mut r = NetResult::new(&p.req, code);
             r.size = n as i32;
-            r.faddr = fa;
-            r.fport = cfg.robot_peer_port(fa, fp).into();
+            (r.faddr, r.fport) = robot_peer(cfg, fa, fp);
             p.complete(r);
         }
     }
@@ -1058,4 +1055,11 @@ pub fn poll_loop(net: &'static Net) {
         }
         st.fire_delayed();
     }
+}
+
+/// The robot's view of a peer address and port (`--net-map` and the port remap undone),
+/// as the result fields want them.
+fn robot_peer(cfg: &NetConfig, addr: u32, port: u16) -> (u32, u32) {
+    let (a, p) = cfg.robot_peer(addr, port);
+    (a, p.into())
 }

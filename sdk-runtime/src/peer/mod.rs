@@ -11,6 +11,7 @@
 //! the commands, before the sensors) to send FRAME / SPEAKER and to collect what the
 //! peers supplied. A peer that disconnects leaves the robot where it last reported it;
 //! the built-in model continues from there.
+mod outbox;
 pub mod wire;
 
 use std::collections::VecDeque;
@@ -53,9 +54,18 @@ impl Conn {
         })
     }
     fn shutdown(&self) {
+        self.shutdown_how(Shutdown::Both);
+    }
+    fn shutdown_how(&self, how: Shutdown) {
         let _ = match self {
-            Conn::Unix(s) => s.shutdown(Shutdown::Both),
-            Conn::Tcp(s) => s.shutdown(Shutdown::Both),
+            Conn::Unix(s) => s.shutdown(how),
+            Conn::Tcp(s) => s.shutdown(how),
+        };
+    }
+    fn set_write_timeout(&self, d: std::time::Duration) {
+        let _ = match self {
+            Conn::Unix(s) => s.set_write_timeout(Some(d)),
+            Conn::Tcp(s) => s.set_write_timeout(Some(d)),
         };
     }
 }
@@ -85,13 +95,26 @@ struct Peer {
     id: u64,
     name: String,
     roles: u32,
-    writer: Mutex<Conn>,
+    /// The socket, for shutting its reading side (the writer thread owns a clone).
+    conn: Conn,
+    out: Arc<outbox::Outbox>,
 }
 
 impl Peer {
-    fn send(&self, kind: u16, frame: u32, payload: &[u8]) -> std::io::Result<()> {
-        let m = message(kind, frame, payload);
-        self.writer.lock().unwrap_or_else(|p| p.into_inner()).write_all(&m)
+    /// Queues a message for the peer's writer thread (waits at most `PATIENCE` when
+    /// the peer is behind); the error says why the peer must go.
+    fn send(&self, kind: u16, frame: u32, payload: &[u8]) -> std::result::Result<(), String> {
+        self.out.push(message(kind, frame, payload), outbox::PATIENCE).map_err(|r| match r {
+            outbox::Refused::Closed => "the connection broke".to_string(),
+            outbox::Refused::Stalled => format!("it stopped reading (nothing taken for {} s)", outbox::PATIENCE.as_secs()),
+        })
+    }
+
+    /// A last message (ERROR, BYE): queued if there is room, then the queue closes and
+    /// the writer ends after sending it.
+    fn send_last(&self, kind: u16, frame: u32, payload: &[u8]) {
+        let _ = self.out.push(message(kind, frame, payload), std::time::Duration::ZERO);
+        self.out.close();
     }
 }
 
@@ -187,26 +210,29 @@ impl Hub {
         };
         let flags_at = 8; // offset of the flags byte in the FRAME payload
         for p in &peers {
-            let mut ok = true;
+            let mut res = Ok(());
             if p.roles & ROLE_SPEAKER != 0 {
                 for (f, pcm) in speaker {
                     let mut o = Out::default();
                     o.u32(f.rate).u16(f.bits).u16(f.channels).bytes(pcm);
-                    ok &= p.send(SPEAKER, n, &o.0).is_ok();
+                    res = res.and_then(|_| p.send(SPEAKER, n, &o.0));
                 }
             }
-            if ok {
-                let res = if Some(p.id) == owner {
+            let res = res.and_then(|_| {
+                if Some(p.id) == owner {
                     let mut payload = frame_payload.to_vec();
                     payload[flags_at] |= FRAME_READINGS_EXPECTED;
                     p.send(FRAME, n, &payload)
                 } else {
                     p.send(FRAME, n, frame_payload)
-                };
-                ok = res.is_ok();
-            }
-            if !ok {
-                self.detach(rt, p.id, "the connection broke");
+                }
+            });
+            if let Err(why) = res {
+                if why.starts_with("it stopped reading") {
+                    let role = if Some(p.id) == owner { " (it owned the clock: the built-in robot's clock runs on)" } else { "" };
+                    rt.diag.warn(&format!("robot peer `{}` dropped after frame {n}: {why}{role}", p.name));
+                }
+                self.detach(rt, p.id, &why);
             }
         }
         let mut st = self.lock();
@@ -226,7 +252,10 @@ impl Hub {
         let mut st = self.lock();
         let Some(pos) = st.peers.iter().position(|p| p.id == id) else { return };
         let p = st.peers.remove(pos);
-        p.writer.lock().unwrap_or_else(|p| p.into_inner()).shutdown();
+        // The writer sends what is queued (an ERROR, say) and closes the socket; a
+        // peer that does not read makes its write time out. Reading ends now.
+        p.out.close();
+        p.conn.shutdown_how(Shutdown::Read);
         {
             let s = &mut *st;
             for (bit, owner) in s.roles.iter_mut().enumerate() {
@@ -257,11 +286,16 @@ impl Hub {
         };
         self.cv.notify_all();
         let frame = self.lock().last_frame;
-        for p in peers {
+        for p in &peers {
             let mut o = Out::default();
             o.str(reason);
-            let _ = p.send(BYE, frame, &o.0);
-            p.writer.lock().unwrap_or_else(|p| p.into_inner()).shutdown();
+            p.send_last(BYE, frame, &o.0);
+        }
+        // BYE reaches the peers that read before the process ends (a silent one costs
+        // at most the write timeout).
+        for p in &peers {
+            p.out.wait_done(outbox::WRITE_TIMEOUT);
+            p.conn.shutdown();
         }
     }
 }
@@ -438,6 +472,7 @@ fn refuse(conn: &Mutex<Conn>, frame: u32, code: u16, text: &str, rt: &Runtime) {
 /// One connection's reader thread.
 fn connection(rt: &'static Runtime, conn: Conn) {
     let hub = &rt.vr.peers;
+    conn.set_write_timeout(outbox::WRITE_TIMEOUT);
     let Ok(mut reader) = conn.try_clone() else { return };
     let mut reader = std::io::BufReader::new(&mut reader);
     // Before HELLO the connection has no Peer: errors go straight to the socket.
@@ -455,6 +490,24 @@ fn connection(rt: &'static Runtime, conn: Conn) {
         Err(e) => return refuse(&early, 0, E_BAD_PAYLOAD, &format!("HELLO: {e}"), rt),
     };
     let conn = early.into_inner().unwrap_or_else(|p| p.into_inner());
+    let Ok(mut writer) = conn.try_clone() else { return };
+    let out = Arc::new(outbox::Outbox::default());
+    {
+        let out = out.clone();
+        let spawned = std::thread::Builder::new().name("openr-peer-write".into()).spawn(move || {
+            let end = writer.try_clone().ok();
+            // Only the writing side: a stalled peer is detached (with a warning) by the
+            // next message the frame thread cannot queue, not by its reader seeing EOF.
+            out.run_writer(&mut writer, move || {
+                if let Some(c) = end {
+                    c.shutdown_how(Shutdown::Write);
+                }
+            })
+        });
+        if spawned.is_err() {
+            return;
+        }
+    }
     let peer = {
         let mut st = hub.lock();
         let id = st.next_id;
@@ -468,10 +521,11 @@ fn connection(rt: &'static Runtime, conn: Conn) {
         }
         let clock = hello.flags & FLAG_CLOCK != 0 && st.clock.is_none();
         let name = if hello.name.is_empty() { format!("peer{id}") } else { hello.name.clone() };
-        let peer = Arc::new(Peer { id, name, roles: granted, writer: Mutex::new(conn) });
+        let peer = Arc::new(Peer { id, name, roles: granted, conn, out: out.clone() });
         // WELCOME goes out before the peer is listed: no FRAME can precede it.
         let welcome = welcome_payload(rt, granted, clock);
         if peer.send(WELCOME, st.last_frame, &welcome).is_err() {
+            peer.out.close();
             for r in st.roles.iter_mut() {
                 if *r == Some(id) {
                     *r = None;
@@ -505,10 +559,8 @@ fn serve_peer(rt: &Runtime, peer: &Peer, reader: &mut impl Read) -> String {
     let fail = |code: u16, text: String| -> String {
         let frame = hub.lock().last_frame;
         rt.diag.warn(&format!("robot peer `{}`: {text} (error {code}; connection closed)", peer.name));
-        // ERROR and the shutdown under one lock: no FRAME can follow the ERROR.
-        let mut w = peer.writer.lock().unwrap_or_else(|p| p.into_inner());
-        let _ = w.write_all(&message(ERROR, frame, &error(code, &text)));
-        w.shutdown();
+        // The queue closes behind the ERROR: no FRAME can follow it.
+        peer.send_last(ERROR, frame, &error(code, &text));
         format!("error {code}: {text}")
     };
     loop {
@@ -600,8 +652,8 @@ fn serve_peer(rt: &Runtime, peer: &Peer, reader: &mut impl Read) -> String {
                 hub.cv.notify_all();
                 let mut o = Out::default();
                 o.u32(if owns { FLAG_CLOCK } else { 0 });
-                if peer.send(CLOCK, frame, &o.0).is_err() {
-                    return "the connection broke".into();
+                if let Err(why) = peer.send(CLOCK, frame, &o.0) {
+                    return why;
                 }
             }
             BYE => return "BYE".into(),

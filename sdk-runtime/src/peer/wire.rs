@@ -261,6 +261,9 @@ pub fn parse_readings(p: &[u8]) -> Result<crate::robot::Readings, String> {
     for _ in 0..n {
         r.sensors.push((i.u32()?, i.i32()?));
     }
+    if !i.is_empty() {
+        return Err(format!("{} bytes after the sensors (the counts do not match the payload)", i.rest().len()));
+    }
     Ok(r)
 }
 
@@ -306,6 +309,14 @@ mod tests {
         assert_eq!(read_message(&mut &bad[..]).unwrap().unwrap().unwrap_err().0, E_TOO_LONG);
         assert!(read_message(&mut &m[..5]).is_err(), "truncated header");
         assert!(read_message(&mut &[][..]).unwrap().is_none(), "clean end");
+    }
+
+    #[test]
+    fn readings_with_trailing_bytes_are_refused() {
+        let mut p = readings(&crate::robot::Readings { joints: vec![(1, 2)], sensors: vec![] });
+        assert!(parse_readings(&p).is_ok());
+        p.push(0);
+        assert!(parse_readings(&p).unwrap_err().contains("1 bytes after the sensors"), "{:?}", parse_readings(&p));
     }
 
     #[test]
