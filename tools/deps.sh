@@ -16,7 +16,8 @@ for pkg_cmd in g++:g++ gcc:gcc make:make binutils:ar gzip:gzip python3:python3 c
   pkg=${pkg_cmd%%:*}; cmd=${pkg_cmd##*:}
   command -v "$cmd" >/dev/null 2>&1 || need+=("$pkg")
 done
-for pkg in libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6; do
+# chromium: the browser tests of `run --view` (cargo-openr/tests/cli/view.rs).
+for pkg in libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 chromium; do
   dpkg -s "$pkg" >/dev/null 2>&1 || need+=("$pkg")
 done
 if command -v python3 >/dev/null 2>&1 && ! python3 -c "import ensurepip, venv" >/dev/null 2>&1; then

@@ -55,6 +55,8 @@ pub struct RunOptions {
     pub peers: crate::peer::PeerOptions,
     /// Object threads trap on FP errors like the robot's CPU (off: `--no-fp-traps`).
     pub fp_traps: bool,
+    /// In-process observers (the `--view` server), attached before the first frame.
+    pub observers: crate::observe::Observers,
 }
 
 /// How a run went.
@@ -166,6 +168,9 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         crate::control::serve(rt, path)?;
     }
     crate::peer::serve(rt, &opts.peers)?;
+    for o in &opts.observers.0 {
+        o.attach(rt)?;
+    }
     std::thread::Builder::new()
         .name("openr-robot".into())
         .spawn(move || crate::vr::run_frames(rt))

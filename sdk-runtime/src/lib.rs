@@ -32,6 +32,7 @@ pub mod loader;
 pub mod ms;
 pub mod net;
 pub mod object;
+pub mod observe;
 pub mod peer;
 pub mod power;
 pub mod robot_api;

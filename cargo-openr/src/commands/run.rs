@@ -66,6 +66,9 @@ pub struct Args {
     /// Let robot peers attach on this loopback TCP address (127.0.0.1:PORT; port 0 picks one)
     #[arg(long, value_name = "ADDR", value_parser = parse_loopback)]
     robot_tcp: Option<std::net::SocketAddr>,
+    /// Serve a live view of the robot in the browser on ADDR (default 127.0.0.1:0: a free loopback port; printed as `Viewing http://ADDR/`)
+    #[arg(long, value_name = "ADDR", num_args = 0..=1, default_missing_value = "127.0.0.1:0", value_parser = parse_view_addr)]
+    view: Option<std::net::SocketAddr>,
     /// Run no frame before a robot peer owning the clock (lockstep) has attached
     #[arg(long)]
     robot_wait: bool,
@@ -123,6 +126,11 @@ fn parse_loopback(s: &str) -> Result<std::net::SocketAddr, String> {
     Ok(a)
 }
 
+fn parse_view_addr(s: &str) -> Result<std::net::SocketAddr, String> {
+    // `--view` takes the next word when it can: `run --view MS` would read MS as ADDR.
+    s.parse().map_err(|_| format!("`{s}` is not an address (try 127.0.0.1:8080); for the default address, give MS_DIR before --view"))
+}
+
 /// `5s`, `250ms`, `2m`, `1h`, or plain seconds (`1.5`).
 pub fn parse_duration(s: &str) -> Result<Duration, String> {
     let s = s.trim();
@@ -159,6 +167,13 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     }
     sdk_runtime::net::config::apply_cli(args.net_bind, args.port_offset, &args.net_map);
     let ms_base = base_tree(&root, &cfg.design.value, &cfg.base.value)?;
+    let mut observers = sdk_runtime::observe::Observers::default();
+    if let Some(addr) = args.view {
+        let view = openr_view::View::bind(addr).map_err(anyhow::Error::msg)?;
+        // As soon as it listens: a browser may connect while the objects load.
+        eprintln!("Viewing http://{}/", view.addr());
+        observers.0.push(std::sync::Arc::new(view));
+    }
     let opts = RunOptions {
         ms_base,
         system_objects: install::system_objects(&root),
@@ -170,6 +185,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         camera_phase_ms: args.camera_phase,
         control: args.control.clone(),
         peers: sdk_runtime::peer::PeerOptions { socket: args.robot_socket.clone(), tcp: args.robot_tcp, wait: args.robot_wait },
+        observers,
         ms_dir: ms_dir.clone(),
         design: cfg.design.value,
         run_for: args.run_for,
@@ -237,6 +253,9 @@ fn check_sim_options(args: &Args) -> anyhow::Result<Vec<Robot<'_>>> {
             anyhow::bail!("{what} needs a simulated world: add `--sim mujoco`");
         }
         return Ok(Vec::new());
+    }
+    if args.view.is_some() {
+        anyhow::bail!("--view shows the built-in robot only: drop --sim mujoco or --view");
     }
     if args.robot_socket.is_some() || args.robot_tcp.is_some() || args.robot_wait {
         anyhow::bail!("--sim mujoco attaches the simulator itself: drop --robot-socket/--robot-tcp/--robot-wait");

@@ -24,3 +24,4 @@ mod sdk;
 mod stick;
 mod support;
 mod tools;
+mod view;

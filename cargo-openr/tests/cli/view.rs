@@ -1,0 +1,201 @@
+//! `cargo openr run --view`: the live page, as a real browser (headless Chromium, from
+//! `tools/deps.sh`) renders it, agrees with the trace of the same run. The runs are
+//! paused through the page's own control endpoint before each look, so nothing here
+//! depends on the machine's speed.
+use std::io::{Read, Write};
+use std::net::TcpStream;
+use std::path::Path;
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+use crate::support::{build, exe, read_trace, sdk_root, spawn_ms, Running};
+
+/// Waits for `Viewing http://ADDR/` on stderr; returns ADDR.
+fn view_addr(run: &mut Running) -> String {
+    let start = Instant::now();
+    loop {
+        let err = run.stderr();
+        if let Some(rest) = err.split("Viewing http://").nth(1) {
+            return rest.split('/').next().unwrap().to_string();
+        }
+        assert!(start.elapsed() < Duration::from_secs(60), "no `Viewing` line:\n{err}");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+/// One HTTP/1.0 request; (status, body).
+fn http(addr: &str, method: &str, path: &str, body: &str) -> (u16, String) {
+    let mut s = TcpStream::connect(addr).unwrap();
+    write!(s, "{method} {path} HTTP/1.0\r\nHost: {addr}\r\nContent-Length: {}\r\n\r\n{body}", body.len()).unwrap();
+    let mut out = String::new();
+    s.read_to_string(&mut out).unwrap();
+    let status = out.split_whitespace().nth(1).and_then(|c| c.parse().ok()).unwrap_or(0);
+    (status, out.split_once("\r\n\r\n").map_or(String::new(), |(_, b)| b.to_string()))
+}
+
+/// Pauses the run once its virtual time reached `at_ms`; returns the paused time.
+fn pause_after(addr: &str, at_ms: u64) -> u64 {
+    let start = Instant::now();
+    loop {
+        let (_, body) = http(addr, "GET", "/state", "");
+        let s: serde_json::Value = serde_json::from_str(&body).unwrap();
+        if s["t_ms"].as_u64().unwrap() >= at_ms {
+            break;
+        }
+        assert!(start.elapsed() < Duration::from_secs(120), "the run never reached {at_ms} ms");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    control(addr, "pause")
+}
+
+/// A `--control` command through the page's endpoint; the answer's t_ms.
+fn control(addr: &str, line: &str) -> u64 {
+    let (code, answer) = http(addr, "POST", "/control", line);
+    assert_eq!(code, 200, "{line}: {answer}");
+    answer.split_whitespace().find_map(|w| w.strip_prefix("t_ms=")).and_then(|v| v.parse().ok()).unwrap_or(0)
+}
+
+/// Headless Chromium on the page: `--dump-dom` (the DOM after load), or a screenshot.
+fn chromium(url: &str, screenshot: Option<&Path>) -> String {
+    let profile = tempfile::tempdir().unwrap();
+    let mut cmd = Command::new("chromium");
+    cmd.args(["--headless", "--disable-gpu", "--no-sandbox", "--no-first-run", "--hide-scrollbars"]).arg(format!("--user-data-dir={}", profile.path().display()));
+    match screenshot {
+        Some(p) => cmd.arg("--window-size=1100,820").arg(format!("--screenshot={}", p.display())),
+        None => cmd.arg("--dump-dom"),
+    };
+    let out = cmd.arg(url).output().expect("chromium (install it with tools/deps.sh)");
+    assert!(out.status.success(), "chromium failed: {}", String::from_utf8_lossy(&out.stderr));
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// The text of the element of class `class` after `data-locator="loc"` in a DOM dump.
+fn cell(dom: &str, loc: &str, class: &str) -> String {
+    let at = dom.find(&format!("<tr data-locator=\"{loc}\"")).unwrap_or_else(|| panic!("no row for {loc}"));
+    let rest = &dom[at..];
+    let from = rest.find(&format!("{class}\">")).unwrap_or_else(|| panic!("no {class} for {loc}")) + class.len() + 2;
+    rest[from..].split('<').next().unwrap().to_string()
+}
+
+/// The value of attribute `attr` of the element with `id`.
+fn attr_of_id(dom: &str, id: &str, attr: &str) -> String {
+    let at = dom.find(&format!("id=\"{id}\"")).unwrap_or_else(|| panic!("no element {id}"));
+    let tag_start = dom[..at].rfind('<').unwrap();
+    let tag = &dom[tag_start..tag_start + dom[tag_start..].find('>').unwrap()];
+    let from = tag.find(&format!("{attr}=\"")).unwrap_or_else(|| panic!("{id} has no {attr}")) + attr.len() + 2;
+    tag[from..].split('"').next().unwrap().to_string()
+}
+
+fn text_of_id(dom: &str, id: &str) -> String {
+    let at = dom.find(&format!("id=\"{id}\"")).unwrap_or_else(|| panic!("no element {id}"));
+    let from = at + dom[at..].find('>').unwrap() + 1;
+    dom[from..].split('<').next().unwrap().to_string()
+}
+
+/// The trace's sensor records just before and after `t_ms`.
+fn sensor_around(trace: &[serde_json::Value], t_ms: u64) -> (&serde_json::Value, &serde_json::Value) {
+    let sensors: Vec<_> = trace.iter().filter(|r| r["kind"] == "sensor").collect();
+    let after = sensors.iter().position(|r| r["t_ms"].as_u64().unwrap() >= t_ms).expect("a sensor record after the pause");
+    (sensors[after.saturating_sub(1)], sensors[after])
+}
+
+#[test]
+fn page_shows_the_joint_angles_of_the_trace_and_the_legs_move() {
+    let p = build("movelegs");
+    let dir = tempfile::tempdir().unwrap();
+    let trace = dir.path().join("t.jsonl");
+    let mut run = spawn_ms(&p.ms(), &["--view", "--speed", "1", "--for", "4s", "--trace", trace.to_str().unwrap()], &[]);
+    let addr = view_addr(&mut run);
+    assert!(addr.starts_with("127.0.0.1:"), "loopback by default: {addr}");
+    let url = format!("http://{addr}/");
+    let t1 = pause_after(&addr, 1000);
+    let dom1 = chromium(&url, None);
+    assert_eq!(text_of_id(&dom1, "t_ms"), t1.to_string(), "the page shows the paused virtual time");
+    let t2 = control(&addr, "step 30");
+    assert_eq!(t2, t1 + 240);
+    let dom2 = chromium(&url, None);
+    let shot = dir.path().join("view.png");
+    chromium(&url, Some(&shot));
+    let png = std::fs::read(&shot).unwrap();
+    assert!(png.starts_with(b"\x89PNG") && png.len() > 10_000, "a screenshot of the page");
+    if let Ok(to) = std::env::var("OPENR_VIEW_SCREENSHOT") {
+        std::fs::copy(&shot, to).unwrap();
+    }
+    control(&addr, "resume");
+    let out = run.wait(Duration::from_secs(120));
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+
+    let trace = read_trace(&trace);
+    let legs = ["PRM:/r2/c1-Joint2:21", "PRM:/r2/c1/c2/c3-Joint2:23", "PRM:/r3/c1-Joint2:31", "PRM:/r5/c1/c2/c3-Joint2:53"];
+    let mut moved = 0.0f64;
+    for (dom, t) in [(&dom1, t1), (&dom2, t2)] {
+        let (before, after) = sensor_around(&trace, t);
+        for loc in legs {
+            let shown: f64 = cell(dom, loc, "joint-deg").parse().unwrap();
+            let (a, b) = (before["joints"][loc].as_f64().unwrap(), after["joints"][loc].as_f64().unwrap());
+            let (lo, hi) = (a.min(b) - 0.01, a.max(b) + 0.01);
+            assert!((lo..=hi).contains(&shown), "{loc} at {t} ms: the page shows {shown}°, the trace {a}°..{b}°");
+        }
+        moved = moved.max((cell(&dom1, legs[0], "joint-deg").parse::<f64>().unwrap() - cell(dom, legs[0], "joint-deg").parse::<f64>().unwrap()).abs());
+    }
+    assert!(moved > 1.0, "movelegs moves the left front leg between {t1} and {t2} ms");
+    let (a, b) = (attr_of_id(&dom1, "leg-side-LF", "points"), attr_of_id(&dom2, "leg-side-LF", "points"));
+    assert_ne!(a, b, "the drawn leg moved");
+}
+
+#[test]
+fn page_lights_the_leds_blinkleds_lights() {
+    let p = build("blinkleds");
+    let dir = tempfile::tempdir().unwrap();
+    let trace = dir.path().join("t.jsonl");
+    let mut run = spawn_ms(&p.ms(), &["--view", "127.0.0.1:0", "--for", "3s", "--trace", trace.to_str().unwrap()], &[]);
+    let addr = view_addr(&mut run);
+    let t = pause_after(&addr, 700);
+    let dom = chromium(&format!("http://{addr}/"), None);
+    control(&addr, "resume");
+    let out = run.wait(Duration::from_secs(120));
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let trace = read_trace(&trace);
+    // Each head LED2 as the trace last set it at the paused time, and its colour on the page.
+    let mut checked = 0;
+    for (code, on_colour) in [("l1", "rgb(255,140,0)"), ("l2", "rgb(255,255,255)"), ("l4", "rgb(40,230,60)"), ("l5", "rgb(60,110,255)")] {
+        let loc = format!("PRM:/r1/c1/c2/c3/{code}-LED2:{code}");
+        let on = trace
+            .iter()
+            .filter(|r| r["kind"] == "led" && r["locator"] == loc.as_str() && r["t_ms"].as_u64().unwrap() <= t)
+            .last()
+            .map_or(false, |r| r["on"] == true);
+        let at = dom.find(&format!("data-locator=\"{loc}\"")).unwrap_or_else(|| panic!("no LED {loc} on the page"));
+        let tag = &dom[dom[..at].rfind('<').unwrap()..at + dom[at..].find('>').unwrap()];
+        let expect = if on { on_colour } else { "rgb(45,45,45)" };
+        assert!(tag.contains(&format!("fill=\"{expect}\"")), "{loc} is {} at {t} ms: {tag}", if on { "on" } else { "off" });
+        checked += on as usize;
+    }
+    assert!(checked > 0, "some head light is on at {t} ms");
+}
+
+#[test]
+fn a_view_port_in_use_is_a_clear_error() {
+    let taken = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    let addr = taken.local_addr().unwrap().to_string();
+    let p = build("hello");
+    let out = Command::new(exe()).env("OPENRSDK_ROOT", sdk_root()).args(["run", "--for", "1s", "--view", &addr]).arg(p.ms()).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_ne!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains(&format!("--view {addr}: cannot listen")) && err.contains("in use"), "{err}");
+    assert!(!err.contains("Viewing"), "{err}");
+}
+
+#[test]
+fn the_view_is_refused_with_mujoco() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = Command::new(exe()).arg("run").arg(dir.path()).args(["--sim", "mujoco", "--view"]).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_ne!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("--view shows the built-in robot only"), "{err}");
+    // `--view` before MS_DIR takes it for the address: the error says so.
+    let out = Command::new(exe()).args(["run", "--view"]).arg(dir.path()).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_ne!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("is not an address") && err.contains("give MS_DIR before --view"), "{err}");
+}

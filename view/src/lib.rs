@@ -1,0 +1,12 @@
+//! `cargo openr run --view`: a live view of the virtual robot in the browser.
+//!
+//! [`View::bind`] listens before the run starts (a port in use fails the command at
+//! once); once the runtime is up ([`sdk_runtime::observe::Observer::attach`]) the server
+//! answers from it. The page (`page.html`, shipped inside the binary) loads nothing
+//! else from the network: it polls `/state` (a [`snapshot`]) at the browser's frame
+//! rate and draws the robot in SVG; `/control` takes the `--control` commands (pause,
+//! resume, step, speed).
+mod server;
+pub mod snapshot;
+
+pub use server::View;
