@@ -14,6 +14,9 @@ fn main() -> ExitCode {
     let mut args: Vec<OsString> = std::env::args_os().collect();
     let argv0 = args.first().cloned().unwrap_or_default();
     let name = Path::new(&argv0).file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    if openr_wrappers::tool_for(&name) == Some(openr_wrappers::Tool::RpStart) {
+        return start_rp_openr(args.split_off(1));
+    }
     if let Some(tool) = openr_wrappers::tool_for(&name) {
         return ExitCode::from(run_as_tool(tool, &name, args.split_off(1)));
     }
@@ -41,4 +44,19 @@ fn run_as_tool(tool: openr_wrappers::Tool, name: &str, args: Vec<OsString>) -> u
     };
     let code = openr_wrappers::run_tool(tool, name, args, &root);
     u8::try_from(code).unwrap_or(1)
+}
+
+/// `start-rp-openr [run options]`: `cargo openr run MS` for the RP host program in the cwd.
+fn start_rp_openr(extra: Vec<OsString>) -> ExitCode {
+    let mut shell = shell::Shell::new();
+    let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
+    let root = ops::rp::own_root();
+    let result = ops::rp::start_args(&cwd, extra, root.as_deref(), &mut shell).and_then(|args| cli::run(args, &mut shell));
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            shell.error(&format!("start-rp-openr: {e:#}"));
+            ExitCode::FAILURE
+        }
+    }
 }

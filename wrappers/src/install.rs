@@ -4,6 +4,9 @@
 //! ```text
 //! <root>/bin/mipsel-linux-{g++,c++,gcc,ld,strip,ar,ranlib} -> ../libexec/cargo-openr
 //! <root>/OPEN_R/bin/{stubgen2,mkbin,gzcp}                    -> ../../libexec/cargo-openr
+//! <root>/RP_OPEN_R/bin/{rp-openr-stubgen2,rp-openr-config,start-rp-openr,rp-openr-ipcrm,setup-rp-openr}
+//!                                                           -> ../../libexec/cargo-openr
+//! <root>/RP_OPEN_R/{include,lib}  -> ../OPEN_R/{include,lib}   (remote processing, host objects)
 //! <root>/OPEN_R/include/**       our OPEN-R headers
 //! <root>/OPEN_R/lib/lib*.a       the runtime's C++ surface, compiled here with host g++
 //! <root>/OPEN_R/src/**           its sources, for debuggers
@@ -244,6 +247,13 @@ fn install_tools(root: &Path, exe: &[u8]) -> Result<(), Error> {
         fs::create_dir_all(&d).map_err(|e| Error::io(&d, e))?;
         let up = "../".repeat(dir.split('/').count());
         symlink(format!("{up}libexec/cargo-openr"), d.join(name)).map_err(|e| Error::io(d.join(name), e))?;
+    }
+    // RP OPEN-R host objects use the very headers and archives of the robot build
+    // (`rp-openr-config` names OPEN_R/...); these links let Makefiles that name
+    // RP_OPEN_R/include or RP_OPEN_R/lib directly find them too.
+    for d in ["include", "lib"] {
+        let link = root.join("RP_OPEN_R").join(d);
+        symlink(format!("../OPEN_R/{d}"), &link).map_err(|e| Error::io(&link, e))?;
     }
     Ok(())
 }

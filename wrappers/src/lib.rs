@@ -23,6 +23,7 @@ pub mod ocf;
 pub mod sanitize;
 mod repair;
 mod root;
+pub mod rp;
 
 use std::ffi::OsString;
 use std::path::Path;
@@ -44,6 +45,14 @@ pub enum Tool {
     Stubgen2,
     Mkbin,
     Gzcp,
+    /// `RP_OPEN_R/bin/rp-openr-stubgen2`
+    RpStubgen2,
+    /// `RP_OPEN_R/bin/rp-openr-config`
+    RpConfig,
+    /// `RP_OPEN_R/bin/start-rp-openr`: runs the runtime, so `cargo-openr` dispatches it itself
+    RpStart,
+    RpIpcrm,
+    RpSetup,
 }
 
 /// `(name, tool, directory under the SDK root)` for every tool the root provides.
@@ -58,6 +67,11 @@ pub const TOOLS: &[(&str, Tool, &str)] = &[
     ("stubgen2", Tool::Stubgen2, "OPEN_R/bin"),
     ("mkbin", Tool::Mkbin, "OPEN_R/bin"),
     ("gzcp", Tool::Gzcp, "OPEN_R/bin"),
+    ("rp-openr-stubgen2", Tool::RpStubgen2, rp::BIN_DIR),
+    ("rp-openr-config", Tool::RpConfig, rp::BIN_DIR),
+    ("start-rp-openr", Tool::RpStart, rp::BIN_DIR),
+    ("rp-openr-ipcrm", Tool::RpIpcrm, rp::BIN_DIR),
+    ("setup-rp-openr", Tool::RpSetup, rp::BIN_DIR),
 ];
 
 /// The tool an executable named `name` (its file name, no directory) stands for.
@@ -77,6 +91,11 @@ pub fn run_tool(tool: Tool, name: &str, args: Vec<OsString>, root: &Path) -> i32
         Tool::Ranlib => binutils::run("ranlib", args),
         Tool::Gzcp => gzcp::run(&args),
         Tool::Mkbin => mkbin::run(args, root),
+        Tool::RpStubgen2 => return rp::stubgen(&args),
+        Tool::RpConfig => rp::config::run(&args, root),
+        Tool::RpIpcrm => rp::ipcrm(&args),
+        Tool::RpSetup => rp::setup(root),
+        Tool::RpStart => Err(Error::usage("start-rp-openr is run by the cargo-openr binary itself")),
         Tool::Stubgen2 => {
             let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
             let (mut out, mut err) = (std::io::stdout(), std::io::stderr());

@@ -9,6 +9,7 @@ pub mod doctor;
 pub mod env;
 pub mod gcc_diag;
 pub mod new;
+pub mod rp;
 pub mod sanitize;
 pub mod sdk;
 pub mod sim;

@@ -43,7 +43,12 @@ fn check_bin(path: &Path) -> Result<(), String> {
     }
     let mut elf = Vec::new();
     flate2::read::GzDecoder::new(&raw[..]).read_to_end(&mut elf).map_err(|e| format!("bad gzip: {e}"))?;
-    let file = object::File::parse(&*elf).map_err(|e| format!("not ELF: {e}"))?;
+    check_elf(&elf)
+}
+
+/// An x86-64 ELF shared object exporting the entry symbols.
+fn check_elf(elf: &[u8]) -> Result<(), String> {
+    let file = object::File::parse(elf).map_err(|e| format!("not ELF: {e}"))?;
     if file.architecture() != object::Architecture::X86_64 {
         return Err(format!("architecture {:?}", file.architecture()));
     }
@@ -99,7 +104,22 @@ fn build_program(src: &Path, root: &Path) -> (usize, Vec<String>) {
             }
         }
     }
-    (listed.len(), failures)
+    // Remote-processing programs also install host objects into RP/host/MS: native
+    // shared objects copied without gzip (remote-processing 2.6).
+    let host_ms = dir.join("RP/host/MS");
+    let host_cfg = host_ms.join("OPEN-R/MW/CONF/OBJECT.CFG");
+    let host_listed = if host_cfg.is_file() { listed_objects(&host_cfg) } else { Vec::new() };
+    for bin in &host_listed {
+        match resolve(&host_ms, bin) {
+            None => failures.push(format!("{name}: host {bin} listed in RP/host OBJECT.CFG was not installed")),
+            Some(p) => {
+                if let Err(e) = check_elf(&fs::read(&p).unwrap_or_default()) {
+                    failures.push(format!("{name}: host {bin}: {e}"));
+                }
+            }
+        }
+    }
+    (listed.len() + host_listed.len(), failures)
 }
 
 #[test]

@@ -16,6 +16,7 @@ mod mujoco;
 mod net;
 mod peer;
 mod robot;
+mod rp;
 mod run;
 mod sanitize;
 mod rust_objects;

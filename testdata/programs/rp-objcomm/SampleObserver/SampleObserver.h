@@ -1,0 +1,30 @@
+//
+// SampleObserver.h
+//
+
+#ifndef SampleObserver_h_DEFINED
+#define SampleObserver_h_DEFINED
+
+#include <OPENR/OObject.h>
+#include <OPENR/OSubject.h>
+#include <OPENR/OObserver.h>
+#include "def.h"
+
+class SampleObserver : public OObject {
+public:
+    SampleObserver();
+    virtual ~SampleObserver() {}
+
+    OSubject*  subject[numOfSubject];
+    OObserver* observer[numOfObserver];
+
+    virtual OStatus DoInit   (const OSystemEvent& event);
+    virtual OStatus DoStart  (const OSystemEvent& event);
+    virtual OStatus DoStop   (const OSystemEvent& event);
+    virtual OStatus DoDestroy(const OSystemEvent& event);
+
+    // Notify function of "SampleObserver.ReceiveString.char.O"
+    void Notify(const ONotifyEvent& event);
+};
+
+#endif // SampleObserver_h_DEFINED
