@@ -254,3 +254,42 @@ fn an_error_of_no_legacy_class_fails_exactly_as_before() {
     }
     assert_eq!(fs::read_to_string(dir.path().join("Box.h")).unwrap(), "struct Box { int width; };\n");
 }
+
+/// A host compiler that logs each run's arguments to `log`, then runs g++.
+fn logging_compiler(dir: &Path, log: &Path) -> PathBuf {
+    use std::os::unix::fs::PermissionsExt;
+    let script = dir.join("logging-g++");
+    fs::write(&script, format!("#!/bin/sh\necho \"$@\" >> '{}'\nexec g++ \"$@\"\n", log.display())).unwrap();
+    fs::set_permissions(&script, fs::Permissions::from_mode(0o755)).unwrap();
+    script
+}
+
+#[test]
+fn a_unit_that_compiles_runs_the_host_compiler_once_with_the_usual_flags() {
+    let dir = tempfile::tempdir().unwrap();
+    let log = dir.path().join("runs.log");
+    let gxx = logging_compiler(dir.path(), &log);
+    fs::write(dir.path().join("ok.cc"), "int f() { return 1; }\n").unwrap();
+    fs::write(dir.path().join("old.cc"), "template <class T> struct H { T::size_type n; };\nH<int>* h;\n").unwrap();
+    let compile = |unit: &str| {
+        Command::new(sdk_root().join("bin/mipsel-linux-g++"))
+            .args(["-c", unit])
+            .env("OPENR_HOST_CXX", &gxx)
+            .current_dir(dir.path())
+            .output()
+            .unwrap()
+    };
+    let out = compile("ok.cc");
+    assert!(out.status.success() && out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
+    let runs = fs::read_to_string(&log).unwrap();
+    assert_eq!(runs.lines().count(), 1, "one g++ run: {runs}");
+    assert!(!runs.contains("-fdiagnostics") && !runs.contains("-fsyntax-only"), "{runs}");
+    // The repair path does run more (preprocessing, rounds, the compile): what the log
+    // shows for a unit that needs it.
+    fs::remove_file(&log).unwrap();
+    let out = compile("old.cc");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let runs = fs::read_to_string(&log).unwrap();
+    assert!(runs.lines().count() >= 4, "{runs}");
+    assert!(dir.path().join("old.o").exists() && dir.path().join("ok.o").exists());
+}
