@@ -19,6 +19,7 @@ const PT_DYNAMIC: u32 = 2;
 const PT_INTERP: u32 = 3;
 const PT_GNU_RELRO: u32 = 0x6474_e552;
 pub(crate) const PF_X: u32 = 1;
+pub(crate) const PF_R: u32 = 4;
 pub(crate) const PF_W: u32 = 2;
 
 /// Little-endian reads that fail instead of panicking.
@@ -71,9 +72,10 @@ pub(crate) struct Image<'a> {
 }
 
 impl Image<'_> {
-    /// The file offset of `len` bytes at address `addr`, which must be file-backed.
+    /// The file offset of `len` bytes at address `addr`, which must be file-backed and
+    /// readable (the loader reads its tables there).
     pub fn offset_of(&self, addr: u64, len: u64) -> Option<u64> {
-        self.loads.iter().find_map(|s| s.file_offset(addr, len))
+        self.loads.iter().filter(|s| s.flags & PF_R != 0).find_map(|s| s.file_offset(addr, len))
     }
     /// True when `addr..addr+len` is mapped by a segment with all of `flags`.
     pub fn mapped(&self, addr: u64, len: u64, flags: u32) -> bool {
@@ -289,6 +291,31 @@ mod tests {
         let mut elf = libm();
         elf[4] = 1;
         assert!(message(&elf).contains("32-bit ELF"), "{}", message(&elf));
+    }
+
+    /// The DT_RELA tag damaged (one byte, as found by mutating a .BIN): without it the
+    /// loader applies no relocation and calls the unrelocated init array (SIGSEGV).
+    #[test]
+    fn a_table_without_its_address() {
+        let mut elf = libm();
+        let ph = dynamic_phdr(&elf);
+        let b = Bytes(&elf);
+        let (off, size) = (b.u64(ph as u64 + 8).unwrap(), b.u64(ph as u64 + 32).unwrap());
+        let rela = (off..off + size).step_by(16).find(|at| b.u64(*at) == Some(7)).expect("DT_RELA") as usize;
+        elf[rela + 6] = 0x40;
+        assert!(message(&elf).contains("its dynamic section has DT_RELASZ without DT_RELA"), "{}", message(&elf));
+    }
+
+    /// DT_PLTGOT's value damaged: dlopen writes its link map there (SIGSEGV).
+    #[test]
+    fn a_plt_got_outside_the_image() {
+        let mut elf = libm();
+        let ph = dynamic_phdr(&elf);
+        let b = Bytes(&elf);
+        let (off, size) = (b.u64(ph as u64 + 8).unwrap(), b.u64(ph as u64 + 32).unwrap());
+        let got = (off..off + size).step_by(16).find(|at| b.u64(*at) == Some(3)).expect("DT_PLTGOT") as usize;
+        elf[got + 12] = 0xbf;
+        assert!(message(&elf).contains("its PLT GOT (DT_PLTGOT 0xbf"), "{}", message(&elf));
     }
 
     #[test]

@@ -9,6 +9,7 @@ type Check = std::result::Result<(), String>;
 const DT_NULL: u64 = 0;
 const DT_NEEDED: u64 = 1;
 const DT_PLTRELSZ: u64 = 2;
+const DT_PLTGOT: u64 = 3;
 const DT_HASH: u64 = 4;
 const DT_STRTAB: u64 = 5;
 const DT_SYMTAB: u64 = 6;
@@ -39,6 +40,8 @@ const DT_VERDEF: u64 = 0x6fff_fffc;
 const DT_VERDEFNUM: u64 = 0x6fff_fffd;
 const DT_VERNEED: u64 = 0x6fff_fffe;
 const DT_VERNEEDNUM: u64 = 0x6fff_ffff;
+const DT_AUXILIARY: u64 = 0x7fff_fffd;
+const DT_FILTER: u64 = 0x7fff_ffff;
 const DF_TEXTREL: u64 = 4;
 const R_X86_64_RELATIVE: u32 = 8;
 
@@ -54,7 +57,7 @@ impl Dynamic {
 }
 
 pub(crate) fn check(image: &Image, seg: &Segment) -> Check {
-    if seg.offset.checked_add(seg.filesz).is_none_or(|e| e > image.bytes.0.len() as u64) || !image.mapped(seg.vaddr, seg.filesz, 0) {
+    if seg.offset.checked_add(seg.filesz).is_none_or(|e| e > image.bytes.0.len() as u64) || image.offset_of(seg.vaddr, seg.filesz).is_none() {
         return Err("the dynamic section lies outside the file or its loadable segments".into());
     }
     let mut entries = Vec::new();
@@ -71,6 +74,7 @@ pub(crate) fn check(image: &Image, seg: &Segment) -> Check {
         at += 16;
     }
     let d = Dynamic { entries };
+    pairs(&d)?;
     let strsz = strings(image, &d)?;
     // The hash tables count the hashed symbols; relocations may name more (GNU hash
     // leaves unhashed undefined symbols out of its count).
@@ -92,7 +96,7 @@ fn strings(image: &Image, d: &Dynamic) -> std::result::Result<u64, String> {
     let off = table(image, "dynamic string table", addr, size)?;
     let strtab = image.bytes.slice(off, size).unwrap_or_default();
     for (tag, val) in &d.entries {
-        if matches!(*tag, DT_NEEDED | DT_SONAME | DT_RPATH | DT_RUNPATH) && !strtab.get(*val as usize..).is_some_and(|s| s.contains(&0)) {
+        if matches!(*tag, DT_NEEDED | DT_SONAME | DT_RPATH | DT_RUNPATH | DT_AUXILIARY | DT_FILTER) && !strtab.get(*val as usize..).is_some_and(|s| s.contains(&0)) {
             return Err(format!("a library name or path (dynamic tag {tag}) points outside the string table"));
         }
     }
@@ -206,6 +210,10 @@ fn relocations(image: &Image, d: &Dynamic) -> std::result::Result<u64, String> {
     }
     let textrel = d.get(DT_TEXTREL).is_some() || d.get(DT_FLAGS).is_some_and(|f| f & DF_TEXTREL != 0);
     let target_flags = if textrel { 0 } else { PF_W };
+    // The loader stores its link map and resolver in the first words of the PLT's GOT.
+    if let Some(got) = d.get(DT_PLTGOT).filter(|g| !image.mapped(*g, 24, PF_W)) {
+        return Err(format!("its PLT GOT (DT_PLTGOT {got:#x}) is not in a writable segment"));
+    }
     let symtab = d.get(DT_SYMTAB).unwrap_or(0);
     let mut nsyms = 1;
     for (what, addr_tag, size_tag) in [("relocation table", DT_RELA, DT_RELASZ), ("PLT relocation table", DT_JMPREL, DT_PLTRELSZ)] {
@@ -242,35 +250,93 @@ fn relocations(image: &Image, d: &Dynamic) -> std::result::Result<u64, String> {
     Ok(nsyms)
 }
 
-/// DT_INIT/DT_FINI and the init/fini arrays: run by dlopen/exit, they must be code. The
-/// arrays' file contents are placeholders; their values are the addends of the
-/// R_X86_64_RELATIVE relocations that fill them.
+/// DT_INIT/DT_FINI and the init/fini arrays: `dlopen` calls them, so they must be code.
+/// Each array entry is filled by a relocation (its file bytes are a placeholder for RELA,
+/// the link-time address for RELR); an entry no relocation fills would be called as is.
 fn init_fini(image: &Image, d: &Dynamic) -> Check {
     for (name, tag) in [("DT_INIT", DT_INIT), ("DT_FINI", DT_FINI)] {
         if let Some(addr) = d.get(tag).filter(|a| !image.mapped(*a, 1, PF_X)) {
             return Err(format!("its {name} function {addr:#x} is not in an executable segment"));
         }
     }
-    let mut arrays = Vec::new();
+    let rela = rela_targets(image, d);
+    let relr = relr_targets(image, d);
     for (what, tag, size_tag) in [("init array", DT_INIT_ARRAY, DT_INIT_ARRAYSZ), ("fini array", DT_FINI_ARRAY, DT_FINI_ARRAYSZ)] {
         let (Some(addr), size) = (d.get(tag), d.get(size_tag).unwrap_or(0)) else { continue };
         if size % 8 != 0 || !image.mapped(addr, size, 0) {
             return Err(format!("its {what} ({size} bytes at {addr:#x}) lies outside its loadable segments"));
         }
-        arrays.push((what, addr, addr + size));
-    }
-    let (Some(rela), Some(size)) = (d.get(DT_RELA), d.get(DT_RELASZ)) else { return Ok(()) };
-    let off = image.offset_of(rela, size).unwrap_or(0);
-    for i in 0..size / 24 {
-        let at = off + i * 24;
-        let (target, info, addend) = (image.bytes.u64(at).unwrap_or(0), image.bytes.u64(at + 8).unwrap_or(0), image.bytes.u64(at + 16).unwrap_or(0));
-        if info as u32 != R_X86_64_RELATIVE {
-            continue;
-        }
-        if let Some((what, ..)) = arrays.iter().find(|(_, lo, hi)| (*lo..*hi).contains(&target)) {
-            if addend != 0 && addend != u64::MAX && !image.mapped(addend, 1, PF_X) {
-                return Err(format!("an entry of its {what} points to {addend:#x}, not into an executable segment"));
+        for k in 0..size / 8 {
+            let entry = addr + 8 * k;
+            let value = match rela.iter().find(|(t, _)| *t == entry) {
+                Some((_, value)) => *value,
+                None if relr.contains(&entry) => image.offset_of(entry, 8).and_then(|o| image.bytes.u64(o)),
+                None => return Err(format!("entry {k} of its {what} is filled by no relocation")),
+            };
+            if let Some(v) = value.filter(|v| !image.mapped(*v, 1, PF_X)) {
+                return Err(format!("entry {k} of its {what} points to {v:#x}, not into an executable segment"));
             }
+        }
+    }
+    Ok(())
+}
+
+/// `(target, Some(addend))` of each R_X86_64_RELATIVE relocation of DT_RELA, `(target,
+/// None)` of the others (bound to a symbol by the loader).
+fn rela_targets(image: &Image, d: &Dynamic) -> Vec<(u64, Option<u64>)> {
+    let (Some(rela), Some(size)) = (d.get(DT_RELA), d.get(DT_RELASZ)) else { return Vec::new() };
+    let Some(off) = image.offset_of(rela, size) else { return Vec::new() };
+    (0..size / 24)
+        .map(|i| {
+            let at = off + i * 24;
+            let (target, info, addend) = (image.bytes.u64(at).unwrap_or(0), image.bytes.u64(at + 8).unwrap_or(0), image.bytes.u64(at + 16).unwrap_or(0));
+            (target, (info as u32 == R_X86_64_RELATIVE).then_some(addend))
+        })
+        .collect()
+}
+
+/// The addresses DT_RELR relocates: an even entry is an address, an odd one a bitmap of
+/// the 63 words after the last address.
+fn relr_targets(image: &Image, d: &Dynamic) -> Vec<u64> {
+    let (Some(relr), Some(size)) = (d.get(DT_RELR), d.get(DT_RELRSZ)) else { return Vec::new() };
+    let Some(off) = image.offset_of(relr, size) else { return Vec::new() };
+    let mut out = Vec::new();
+    let mut next = 0u64;
+    for i in 0..size / 8 {
+        let entry = image.bytes.u64(off + 8 * i).unwrap_or(0);
+        if entry & 1 == 0 {
+            out.push(entry);
+            next = entry.wrapping_add(8);
+        } else {
+            out.extend((1..64).filter(|j| entry >> j & 1 == 1).map(|j| next.wrapping_add((j - 1) * 8)));
+            next = next.wrapping_add(63 * 8);
+        }
+    }
+    out
+}
+
+/// Tags that come in pairs: an address without its size (or count) is as damaging as a
+/// wrong one (the loader then skips or misreads the table).
+fn pairs(d: &Dynamic) -> Check {
+    let pairs = [
+        (DT_STRTAB, DT_STRSZ, "DT_STRTAB", "DT_STRSZ"),
+        (DT_RELA, DT_RELASZ, "DT_RELA", "DT_RELASZ"),
+        (DT_JMPREL, DT_PLTRELSZ, "DT_JMPREL", "DT_PLTRELSZ"),
+        (DT_RELR, DT_RELRSZ, "DT_RELR", "DT_RELRSZ"),
+        (DT_INIT_ARRAY, DT_INIT_ARRAYSZ, "DT_INIT_ARRAY", "DT_INIT_ARRAYSZ"),
+        (DT_FINI_ARRAY, DT_FINI_ARRAYSZ, "DT_FINI_ARRAY", "DT_FINI_ARRAYSZ"),
+        (DT_VERNEED, DT_VERNEEDNUM, "DT_VERNEED", "DT_VERNEEDNUM"),
+        (DT_VERDEF, DT_VERDEFNUM, "DT_VERDEF", "DT_VERDEFNUM"),
+    ];
+    // The loader sets up the PLT's GOT whenever there are PLT relocations.
+    if d.get(DT_JMPREL).is_some() && d.get(DT_PLTGOT).is_none() {
+        return Err("its dynamic section has DT_JMPREL without DT_PLTGOT".into());
+    }
+    for (a, b, an, bn) in pairs {
+        match (d.get(a).is_some(), d.get(b).is_some()) {
+            (true, false) => return Err(format!("its dynamic section has {an} without {bn}")),
+            (false, true) => return Err(format!("its dynamic section has {bn} without {an}")),
+            _ => {}
         }
     }
     Ok(())
