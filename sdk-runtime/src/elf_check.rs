@@ -306,6 +306,18 @@ mod tests {
         assert!(message(&elf).contains("its dynamic section has DT_RELASZ without DT_RELA"), "{}", message(&elf));
     }
 
+    /// The DT_PLTREL tag damaged: the loader would read the PLT relocations as REL.
+    #[test]
+    fn plt_relocations_of_no_kind() {
+        let mut elf = libm();
+        let ph = dynamic_phdr(&elf);
+        let b = Bytes(&elf);
+        let (off, size) = (b.u64(ph as u64 + 8).unwrap(), b.u64(ph as u64 + 32).unwrap());
+        let pltrel = (off..off + size).step_by(16).find(|at| b.u64(*at) == Some(20)).expect("DT_PLTREL") as usize;
+        elf[pltrel + 3] = 0xc6;
+        assert!(message(&elf).contains("not marked as the RELA kind (DT_PLTREL)"), "{}", message(&elf));
+    }
+
     /// DT_PLTGOT's value damaged: dlopen writes its link map there (SIGSEGV).
     #[test]
     fn a_plt_got_outside_the_image() {

@@ -205,8 +205,8 @@ fn relocations(image: &Image, d: &Dynamic) -> std::result::Result<u64, String> {
     if d.get(DT_RELAENT).is_some_and(|e| e != 24) {
         return Err("its relocation entries are not 24 bytes (DT_RELAENT)".into());
     }
-    if d.get(DT_JMPREL).is_some() && d.get(DT_PLTREL).is_some_and(|k| k != DT_RELA) {
-        return Err("its PLT relocations are not of the RELA kind (DT_PLTREL)".into());
+    if d.get(DT_JMPREL).is_some() && d.get(DT_PLTREL) != Some(DT_RELA) {
+        return Err("its PLT relocations are not marked as the RELA kind (DT_PLTREL)".into());
     }
     let textrel = d.get(DT_TEXTREL).is_some() || d.get(DT_FLAGS).is_some_and(|f| f & DF_TEXTREL != 0);
     let target_flags = if textrel { 0 } else { PF_W };
@@ -227,6 +227,11 @@ fn relocations(image: &Image, d: &Dynamic) -> std::result::Result<u64, String> {
             let (target, info) = (image.bytes.u64(at).unwrap_or(0), image.bytes.u64(at + 8).unwrap_or(0));
             if !image.mapped(target, 8, target_flags) {
                 return Err(format!("relocation {i} of its {what} writes to {target:#x}, outside its writable segments"));
+            }
+            // A PLT relocation fills one of the GOT slots after the loader's three words.
+            let slots = d.get(DT_PLTGOT).map(|g| g.saturating_add(24)..g.saturating_add(24 + size / 3));
+            if addr_tag == DT_JMPREL && slots.as_ref().is_some_and(|r| !r.contains(&target)) {
+                return Err(format!("relocation {i} of its {what} writes to {target:#x}, outside the PLT's GOT slots"));
             }
             let sym = info >> 32;
             if sym >= nsyms {
