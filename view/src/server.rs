@@ -66,6 +66,10 @@ fn answer(rt: &'static Runtime, mut req: Request) {
             Response::from_string(page).with_header(header("Content-Type", "text/html; charset=utf-8"))
         }
         (Method::Get, "/state") => Response::from_string(crate::snapshot::take(rt).to_string()).with_header(header("Content-Type", "application/json")),
+        (Method::Get, "/camera.png") => match camera_png(rt) {
+            Ok(png) => Response::from_data(png).with_header(header("Content-Type", "image/png")),
+            Err(e) => Response::from_string(format!("cannot encode the camera picture: {e}\n")).with_status_code(500),
+        },
         (Method::Post, "/control") => {
             let mut line = String::new();
             let _ = req.as_reader().take(256).read_to_string(&mut line);
@@ -77,4 +81,23 @@ fn answer(rt: &'static Runtime, mut req: Request) {
     };
     let res = res.with_header(header("Cache-Control", "no-store"));
     let _ = req.respond(res);
+}
+
+/// The camera's last picture (sensor resolution, RGB) as PNG: encoded only when a
+/// browser asks for it, outside the robot's lock.
+fn camera_png(rt: &Runtime) -> std::result::Result<Vec<u8>, png::EncodingError> {
+    let (w, h, data) = {
+        let robot = rt.vr.robot();
+        let img = robot.camera_rgb();
+        (img.width as u32, img.height as u32, img.data.clone())
+    };
+    let mut out = Vec::new();
+    let mut enc = png::Encoder::new(&mut out, w, h);
+    enc.set_color(png::ColorType::Rgb);
+    enc.set_depth(png::BitDepth::Eight);
+    enc.set_compression(png::Compression::Fast);
+    let mut writer = enc.write_header()?;
+    writer.write_image_data(&data)?;
+    writer.finish()?;
+    Ok(out)
 }

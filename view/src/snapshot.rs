@@ -54,6 +54,7 @@ pub fn take(rt: &Runtime) -> Value {
         "paused": rt.clock.paused(),
         "speed": speed,
         "motor_power": body.motor_power(),
+        "camera_images": robot.camera().field_counter.saturating_sub(1),
         "face_mode": body.face_mode(),
         "joints": joints,
         "leds": leds,

@@ -57,6 +57,10 @@ fn control(addr: &str, line: &str) -> u64 {
 
 /// Headless Chromium on the page: `--dump-dom` (the DOM after load), or a screenshot.
 fn chromium(url: &str, screenshot: Option<&Path>) -> String {
+    chromium_with(url, screenshot, &[])
+}
+
+fn chromium_with(url: &str, screenshot: Option<&Path>, extra: &[&str]) -> String {
     let profile = tempfile::tempdir().unwrap();
     let mut cmd = Command::new("chromium");
     cmd.args(["--headless", "--disable-gpu", "--no-sandbox", "--no-first-run", "--hide-scrollbars"]).arg(format!("--user-data-dir={}", profile.path().display()));
@@ -64,7 +68,7 @@ fn chromium(url: &str, screenshot: Option<&Path>) -> String {
         Some(p) => cmd.arg("--window-size=1100,820").arg(format!("--screenshot={}", p.display())),
         None => cmd.arg("--dump-dom"),
     };
-    let out = cmd.arg(url).output().expect("chromium (install it with tools/deps.sh)");
+    let out = cmd.args(extra).arg(url).output().expect("chromium (install it with tools/deps.sh)");
     assert!(out.status.success(), "chromium failed: {}", String::from_utf8_lossy(&out.stderr));
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
@@ -198,4 +202,48 @@ fn the_view_is_refused_with_mujoco() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_ne!(out.status.code(), Some(0), "{err}");
     assert!(err.contains("is not an address") && err.contains("give MS_DIR before --view"), "{err}");
+}
+
+#[test]
+fn page_shows_the_camera_picture() {
+    let p = build("imagesave");
+    let dir = tempfile::tempdir().unwrap();
+    // The camera sees a picture: left half red, right half blue.
+    let (w, h) = (416usize, 320usize);
+    let mut ppm = format!("P6 {w} {h} 255\n").into_bytes();
+    for _ in 0..h {
+        for x in 0..w {
+            ppm.extend_from_slice(if x < w / 2 { &[220, 30, 30] } else { &[30, 30, 220] });
+        }
+    }
+    let pic = dir.path().join("pic.ppm");
+    std::fs::write(&pic, ppm).unwrap();
+    let mut run = spawn_ms(&p.ms(), &["--view", "--for", "3s", "--images", pic.to_str().unwrap()], &[]);
+    let addr = view_addr(&mut run);
+    let t = pause_after(&addr, 500);
+    let (code, png) = {
+        let mut s = TcpStream::connect(&addr).unwrap();
+        write!(s, "GET /camera.png HTTP/1.0\r\n\r\n").unwrap();
+        let mut out = Vec::new();
+        s.read_to_end(&mut out).unwrap();
+        let at = out.windows(4).position(|x| x == b"\r\n\r\n").unwrap() + 4;
+        (String::from_utf8_lossy(&out[..12]).into_owned(), out[at..].to_vec())
+    };
+    assert!(code.contains("200"), "{code}");
+    let dom = chromium_with(&format!("http://{addr}/"), None, &["--virtual-time-budget=2000"]);
+    control(&addr, "resume");
+    let out = run.wait(Duration::from_secs(120));
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+
+    let mut reader = png::Decoder::new(&png[..]).read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    assert_eq!((info.width, info.height), (w as u32, h as u32));
+    let px = |x: usize, y: usize| &buf[(y * w + x) * 3..(y * w + x) * 3 + 3];
+    assert_eq!(px(20, 160), &[220, 30, 30], "left: red");
+    assert_eq!(px(400, 160), &[30, 30, 220], "right: blue");
+    let shown: u64 = text_of_id(&dom, "camera-images").parse().unwrap();
+    assert!(shown >= t / 34, "about 30 pictures a second by {t} ms: the page counts {shown}");
+    assert!(!attr_of_id(&dom, "camera-box", "id").is_empty() && !dom.contains("id=\"camera-box\" hidden"), "the camera panel is shown");
+    assert!(attr_of_id(&dom, "camera", "src").starts_with("/camera.png"), "the page loads the picture");
 }
