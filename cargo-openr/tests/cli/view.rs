@@ -247,3 +247,19 @@ fn page_shows_the_camera_picture() {
     assert!(!attr_of_id(&dom, "camera-box", "id").is_empty() && !dom.contains("id=\"camera-box\" hidden"), "the camera panel is shown");
     assert!(attr_of_id(&dom, "camera", "src").starts_with("/camera.png"), "the page loads the picture");
 }
+
+#[test]
+fn page_follows_the_run() {
+    let p = build("movelegs");
+    let mut run = spawn_ms(&p.ms(), &["--view", "--for", "60s"], &[]);
+    let addr = view_addr(&mut run);
+    pause_after(&addr, 200);
+    control(&addr, "resume");
+    // The page as served carries the state of the moment; its polling draws newer ones.
+    let dom = chromium_with(&format!("http://{addr}/"), None, &["--virtual-time-budget=3000"]);
+    let _ = run.stop();
+    let inlined = dom.split("const INITIAL = ").nth(1).and_then(|r| r.split("\"t_ms\":").nth(1)).expect("the inlined snapshot");
+    let initial: u64 = inlined.split(|c: char| !c.is_ascii_digit()).next().unwrap().parse().unwrap();
+    let shown: u64 = text_of_id(&dom, "t_ms").parse().unwrap();
+    assert!(shown > initial, "the page drew a later state than the one it was served with ({shown} ms vs {initial} ms)");
+}
