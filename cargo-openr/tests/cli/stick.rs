@@ -42,6 +42,7 @@ fn a_program_saves_into_a_directory_only_the_base_tree_has() {
     assert_eq!(log, "joint 1 error 10\njoint 2 error 20\njoint 3 error 30\n");
     // Reads fall through to the base tree (WCONSOLE has the WLAN defaults).
     assert!(out.stdout.contains("SaveLog : /MS/OPEN-R/SYSTEM/CONF/WLANDFLT.TXT says HOSTNAME=AIBO"), "{}", out.stdout);
+    assert!(out.stdout.contains("SaveLog : /MS/OPEN-R holds MW SYSTEM\n"), "a listing shows both layers:\n{}", out.stdout);
     assert_eq!(base_trees(), before, "the run wrote into the SDK root's base trees");
     assert!(!p.ms().join("OPEN-R/SYSTEM").exists(), "reading a base file copies nothing");
 }
@@ -53,6 +54,7 @@ fn the_base_tree_is_chosen_with_base_or_openr_toml() {
     assert_eq!(out.code, Some(0), "{}", out.stderr);
     assert!(out.stdout.contains("SaveLog : can't open /MS/OPEN-R/MW/DATA/P/LOG.TXT"), "the program's MS alone:\n{}", out.stdout);
     assert!(!p.ms().join("OPEN-R/MW/DATA").exists());
+    assert!(out.stdout.contains("SaveLog : /MS/OPEN-R holds MW\n"), "{}", out.stdout);
 
     // BASIC has no wireless settings; the project file picks it.
     fs::write(p.dir.path().join("savelog/openr.toml"), "base = \"basic/memprot\"\n").unwrap();

@@ -141,7 +141,8 @@ trampolines! {
     "fstatat" => fstatat, "fstatat64" => fstatat64, "statx" => statx,
     "statfs" => statfs, "statfs64" => statfs64, "statvfs" => statvfs, "statvfs64" => statvfs64,
     "access" => access, "euidaccess" => euidaccess, "eaccess" => eaccess, "faccessat" => faccessat,
-    "opendir" => opendir, "scandir" => scandir, "scandir64" => scandir64, "scandirat" => scandirat,
+    "opendir" => opendir, "readdir" => readdir, "readdir64" => readdir64, "rewinddir" => rewinddir,
+    "closedir" => closedir, "scandir" => scandir, "scandir64" => scandir64, "scandirat" => scandirat,
     "mkdir" => mkdir, "mkdirat" => mkdirat, "rmdir" => rmdir,
     "unlink" => unlink, "unlinkat" => unlinkat, "remove" => remove,
     "rename" => rename, "renameat" => renameat, "renameat2" => renameat2,
@@ -307,7 +308,39 @@ unsafe extern "C" fn realpath(path: C, resolved: *mut c_char, _: usize, _: usize
 // ---- directories ----
 
 unsafe extern "C" fn opendir(path: C, _: usize, _: usize, _: usize, _: usize, caller: usize) -> P {
-    unsafe { with(caller, path, Access::Read, null_mut(), |p| call!("opendir", null_mut(), fn(C) -> P, p)) }
+    unsafe {
+        with(caller, path, Access::Read, null_mut(), |p| {
+            let dir = call!("opendir", null_mut(), fn(C) -> P, p);
+            if !dir.is_null() && p != path {
+                super::dirs::opened(dir, path, p); // an object's listing of the overlay
+            }
+            dir
+        })
+    }
+}
+unsafe extern "C" fn readdir(dir: P, _: usize, _: usize, _: usize, _: usize, caller: usize) -> P {
+    unsafe { readdir64(dir, 0, 0, 0, 0, caller) }
+}
+unsafe extern "C" fn readdir64(dir: P, _: usize, _: usize, _: usize, _: usize, caller: usize) -> P {
+    // dirent and dirent64 are one layout on LP64 Linux.
+    let e = call!("readdir64", null_mut(), fn(P) -> P, dir);
+    if !e.is_null() || !is_objects(caller) {
+        return e;
+    }
+    let errno = std::io::Error::last_os_error().raw_os_error().unwrap_or(0);
+    let extra = super::dirs::next_extra(dir);
+    if extra.is_null() {
+        set_errno(errno); // the end of the listing, or libc's error, as libc said
+    }
+    extra.cast()
+}
+unsafe extern "C" fn rewinddir(dir: P, _: usize, _: usize, _: usize, _: usize, _caller: usize) {
+    super::dirs::rewound(dir);
+    call!("rewinddir", (), fn(P) -> (), dir)
+}
+unsafe extern "C" fn closedir(dir: P, _: usize, _: usize, _: usize, _: usize, _caller: usize) -> c_int {
+    super::dirs::closed(dir);
+    call!("closedir", -1, fn(P) -> c_int, dir)
 }
 unsafe extern "C" fn scandir(path: C, list: P, filter: usize, compar: usize, _: usize, caller: usize) -> c_int {
     unsafe { with(caller, path, Access::Read, -1, |p| call!("scandir", -1, fn(C, P, usize, usize) -> c_int, p, list, filter, compar)) }

@@ -23,6 +23,7 @@ use std::sync::OnceLock;
 use crate::ms::Access;
 use crate::runtime::Runtime;
 
+mod dirs;
 mod fs;
 mod trampoline;
 
@@ -144,7 +145,7 @@ pub(crate) unsafe fn map(caller: usize, path: *const c_char, access: Access) -> 
 /// A host path inside the program's MS directory or the base tree — what objects built
 /// with an older SDK root pass after mapping `/MS` themselves — as the `/MS` path it
 /// stands for, so that it is normalised and confined like one (`<stick>/../x` escapes).
-fn as_ms_path(rt: &Runtime, p: &str) -> Option<String> {
+pub(crate) fn as_ms_path(rt: &Runtime, p: &str) -> Option<String> {
     [Some(rt.ms.root()), rt.ms.base()].into_iter().flatten().find_map(|layer| {
         let rest = p.strip_prefix(layer.to_str()?)?;
         (rest.is_empty() || rest.starts_with('/')).then(|| format!("/MS{rest}"))

@@ -160,6 +160,18 @@ impl MsDir {
         (own.found == comps.len()).then(|| self.confine(&self.root, &own.names, &[]).ok()).flatten().filter(|p| p.exists())
     }
 
+    /// The base tree's directory at `path` when the program's directory has it too: a
+    /// listing of it then shows both.
+    pub fn lower_dir(&self, path: &str) -> Option<PathBuf> {
+        let base = self.base.as_deref()?;
+        let comps = normalise(path).ok()?;
+        let (own, w) = (walk(&self.root, &comps), walk(base, &comps));
+        if own.found != comps.len() || w.found != comps.len() {
+            return None;
+        }
+        self.confine(base, &w.names, &[]).ok().filter(|d| d.is_dir())
+    }
+
     /// A file the base tree has, opened for writing: copied into the program's tree
     /// first (a directory is handed back as it is: mkdir then fails with EEXIST, open
     /// with EISDIR, and nothing is written).

@@ -95,6 +95,9 @@ fn reads_fall_through_to_the_base_tree_and_the_program_wins() {
     assert_eq!(wlan, ms.base().unwrap().join("OPEN-R/SYSTEM/CONF/WLANDFLT.TXT"));
     assert!(ms.existing("/MS/OPEN-R/MW/DATA/P").unwrap().is_dir());
     assert!(ms.existing_in_program("/MS/OPEN-R/SYSTEM/CONF/WLANDFLT.TXT").is_none());
+    // Listings merge where both layers have the directory.
+    assert_eq!(ms.lower_dir("/MS/OPEN-R"), Some(ms.base().unwrap().join("OPEN-R")));
+    assert_eq!(ms.lower_dir("/MS/OPEN-R/SYSTEM"), None, "the program has none: the base's is listed alone");
 }
 
 #[test]

@@ -10,6 +10,8 @@
 
 #include <stdio.h>
 #include <string.h>
+#include <stdlib.h>
+#include <dirent.h>
 #include <OPENR/OSyslog.h>
 #include <OPENR/core_macro.h>
 #include "SaveLog.h"
@@ -35,6 +37,7 @@ SaveLog::DoStart(const OSystemEvent& event)
 {
     SaveLines();
     ShowWlanDefaults();
+    ListStick();
 
     ENABLE_ALL_SUBJECT;
     ASSERT_READY_TO_ALL_OBSERVER;
@@ -88,4 +91,35 @@ SaveLog::ShowWlanDefaults()
         }
     }
     fclose(fp);
+}
+
+static int
+compareNames(const void* a, const void* b)
+{
+    return strcmp((const char*)a, (const char*)b);
+}
+
+// The stick's OPEN-R holds the program's MW and the base tree's SYSTEM.
+void
+SaveLog::ListStick()
+{
+    DIR* dir = opendir("/MS/OPEN-R");
+    if (dir == NULL) {
+        OSYSPRINT(("SaveLog : can't open /MS/OPEN-R\n"));
+        return;
+    }
+    char names[16][16];
+    int num = 0;
+    struct dirent* entry;
+    while ((entry = readdir(dir)) != NULL && num < 16) {
+        if (entry->d_name[0] == '.') continue;
+        strncpy(names[num], entry->d_name, 15);
+        names[num][15] = '\0';
+        num++;
+    }
+    closedir(dir);
+    qsort(names, num, sizeof(names[0]), compareNames);
+    OSYSPRINT(("SaveLog : /MS/OPEN-R holds"));
+    for (int i = 0; i < num; i++) OSYSPRINT((" %s", names[i]));
+    OSYSPRINT(("\n"));
 }

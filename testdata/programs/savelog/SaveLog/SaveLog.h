@@ -26,6 +26,7 @@ public:
 private:
     void SaveLines();
     void ShowWlanDefaults();
+    void ListStick();
 };
 
 #endif // SaveLog_h_DEFINED
