@@ -15,8 +15,9 @@ fn view_addr(run: &mut Running) -> String {
     let start = Instant::now();
     loop {
         let err = run.stderr();
-        if let Some(rest) = err.split("Viewing http://").nth(1) {
-            return rest.split('/').next().unwrap().to_string();
+        // The whole line: stderr arrives in pieces.
+        if let Some((addr, _)) = err.split("Viewing http://").nth(1).and_then(|rest| rest.split_once("/\n")) {
+            return addr.to_string();
         }
         assert!(start.elapsed() < Duration::from_secs(60), "no `Viewing` line:\n{err}");
         std::thread::sleep(Duration::from_millis(20));
