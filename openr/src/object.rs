@@ -321,10 +321,10 @@ fn with_context<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
 pub unsafe fn dispatch<T: Object>(sel: u32, msg: *mut c_void) {
     let run = std::panic::AssertUnwindSafe(|| unsafe { dispatch_inner::<T>(sel, msg) });
     if std::panic::catch_unwind(run).is_err() {
+        // A panic is the Rust object's crash: the runtime's crash report names the
+        // object and the entry, and the run fails (as for a C++ exception).
         osyslog(Priority::Error, &format!("panic in the entry for selector {sel}"));
-        if sel <= comm::SEL_DESTROY {
-            reply_status(abi::O_FAIL);
-        }
+        std::process::abort();
     }
 }
 

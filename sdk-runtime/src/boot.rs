@@ -57,12 +57,18 @@ pub struct RunOptions {
     pub fp_traps: bool,
     /// In-process observers (the `--view` server), attached before the first frame.
     pub observers: crate::observe::Observers,
+    /// Real time an object may take to answer a life-cycle call, or to run one message
+    /// at `--speed max`, before it is reported stuck (lifecycle.rs, sched.rs).
+    pub watchdog: Duration,
 }
 
 /// How a run went.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Outcome {
     pub ended: Ended,
+    /// Objects that did not answer a life-cycle call, with what they were running: the
+    /// run failed even if it ended on time.
+    pub failures: Vec<String>,
     /// Robot frames (8 ms) run, and how many of them started late in real time.
     pub frames: u64,
     pub late_frames: u64,
@@ -79,17 +85,6 @@ pub enum Ended {
     Shutdown,
 }
 
-const OREASON_BOOT: u32 = 0;
-const OREASON_SHUTDOWN: u32 = 1;
-const SEL_INIT: u32 = 0;
-const SEL_START: u32 = 1;
-const SEL_STOP: u32 = 2;
-const SEL_DESTROY: u32 = 3;
-/// Sony's observer waits 15 s for a subject's control reply; we give the whole
-/// connection a little more.
-const CONNECT_TIMEOUT: Duration = Duration::from_secs(20);
-/// A Stop/Destroy handler blocked on console input must not hang the shutdown.
-const SHUTDOWN_TIMEOUT: Duration = Duration::from_secs(3);
 
 /// Loads and runs the stick until it ends; returns how it ended.
 pub fn run(opts: &RunOptions) -> Result<Outcome> {
@@ -132,6 +127,9 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     std::hint::black_box(crate::interpose::keep());
 
     let clock = Clock::new(opts.speed);
+    let sched = crate::sched::Sched::default();
+    sched.set_serial(opts.speed == crate::clock::Speed::Max);
+    sched.set_watchdog(opts.watchdog);
     let rt = Runtime::install(Runtime {
         ms,
         design: CString::new(opts.design.clone()).map_err(|_| ErrorKind::Runtime("bad design name".into()))?,
@@ -145,11 +143,13 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         diag: opts.diag,
         shutdown_requested: AtomicBool::new(false),
         booting: AtomicBool::new(true),
-        idle: Default::default(),
         timers: Timers::new(),
         vr: crate::vr::VrService::new(robot, trace, crate::audio::Speaker::new(opts.speaker_wav.clone()), crate::audio::Mic::new(mic_pcm)),
         vectors: Mutex::new(Vec::new()),
+        sched,
+        signal: std::sync::atomic::AtomicI32::new(0),
     });
+    watch_signals(rt, signals)?;
 
     for (i, (path, image)) in opts.system_objects.iter().zip(system_images).enumerate() {
         let label = format!("/SYSTEM/OBJS/{}", path.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned()));
@@ -175,53 +175,30 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         .name("openr-robot".into())
         .spawn(move || crate::vr::run_frames(rt))
         .map_err(|e| ErrorKind::Runtime(format!("cannot start the robot thread: {e}")))?;
-    // As on the robot, the system objects are up before the user objects boot; their
-    // observers assert ready at each connection (robot-api 8.2.3), so a user DoStart
-    // finds the effector and the speaker ready (object-model 2.8.1).
-    let (system, user): (Vec<_>, Vec<_>) = all.iter().partition(|s| s.oid < FIRST_OID);
-    for sel in [SEL_INIT, SEL_START] {
-        for slot in &system {
-            hook(rt, slot, sel, OREASON_BOOT, None)?;
-        }
-    }
-    for slot in &user {
-        hook(rt, slot, SEL_INIT, OREASON_BOOT, None)?;
-    }
-    if connections.iter().any(|c| c.subject == crate::vr::CAMERA_SERVICE) {
-        rt.vr.want_camera();
-    }
-    connect_all(rt, &connect_path, &connections, opts.lenient_connect)?;
-
-    for slot in &user {
-        // Start is not awaited: a DoStart may block (on console input, say).
-        let module = slot.module.get().expect("loaded");
-        let _ = rt.send(slot.oid, SEL_START, module.reason_message(OREASON_BOOT));
-    }
+    let mut booted = Vec::new();
+    let mut failures = crate::lifecycle::Failures::default();
+    let boot = crate::lifecycle::boot(rt, &all, (&connect_path, &connections), opts.lenient_connect, opts.watchdog, &mut booted, &mut failures)?;
     rt.booting.store(false, std::sync::atomic::Ordering::Release);
-    rt.idle.notify();
-    rt.diag.info("all objects started");
-
-    let ended = wait_for_end(rt, &signals, opts.run_for);
-    rt.diag.info(&format!("shutting down ({ended:?}): Stop, then Destroy"));
-    for sel in [SEL_STOP, SEL_DESTROY] {
-        for slot in &all {
-            if crate::console::input::waits_for_input(slot.index) {
-                // Single-threaded, it cannot take a message while it waits (the robot's
-                // objects neither): no Stop/Destroy, no timeout to wait out.
-                if sel == SEL_STOP {
-                    rt.diag.info(&format!("object `{}` waits for console input: not stopped", slot.name()));
-                }
-            } else if !slot.is_stopped() {
-                let _ = hook(rt, slot, sel, OREASON_SHUTDOWN, Some(SHUTDOWN_TIMEOUT));
-            }
+    let ended = match boot {
+        Ok(()) => {
+            rt.diag.info("all objects started");
+            wait_for_end(rt, opts.run_for)
         }
-    }
+        Err(crate::lifecycle::Interrupted(sig)) => Ended::Signal(sig),
+    };
+    rt.diag.info(&format!("shutting down ({ended:?}): Stop, then Destroy"));
+    // No frame after the end; at `--speed max` the shutdown takes its turn where the
+    // frame thread stopped (sched.rs), so it begins at the same message every run.
+    rt.clock.freeze();
+    rt.sched.take_over(Duration::from_secs(2));
+    rt.sched.release();
+    crate::lifecycle::shutdown(rt, &booted, opts.watchdog, &mut failures);
     rt.vr.flush_trace();
     rt.vr.peers.close_all(&format!("the run ended ({ended:?})"));
     // stdout only: fflush(NULL) would wait for stdin's lock, held by a blocked reader.
     unsafe { libc::fflush(crate::console::stdout_file()) };
     let load = |c: &std::sync::atomic::AtomicU64| c.load(std::sync::atomic::Ordering::Relaxed);
-    Ok(Outcome { ended, frames: load(&rt.vr.frames), late_frames: load(&rt.vr.late_frames) })
+    Ok(Outcome { ended, failures: failures.0, frames: load(&rt.vr.frames), late_frames: load(&rt.vr.late_frames) })
 }
 
 fn with_cfg_line(e: Error, cfg: &std::path::Path, line: usize) -> Error {
@@ -243,7 +220,6 @@ fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path
         module: OnceLock::new(),
         tx,
         stopped: AtomicBool::new(false),
-        pending: std::sync::atomic::AtomicUsize::new(0),
         sleeping: AtomicBool::new(false),
     });
     rt.objects.write().unwrap_or_else(|p| p.into_inner()).push(slot.clone());
@@ -284,67 +260,8 @@ fn name_thread(name: &str) {
     }
 }
 
-/// Runs one life-cycle hook as a call and reports a non-success status.
-fn hook(rt: &Runtime, slot: &ObjectSlot, sel: u32, reason: u32, timeout: Option<Duration>) -> Result<()> {
-    let module = slot.module.get().expect("loaded");
-    let what = ["Init", "Start", "Stop", "Destroy"][sel as usize];
-    match rt.call(slot.oid, sel, module.reason_message(reason), timeout) {
-        Ok(reply) if !reply.is_empty() => {
-            let status = module.status_of(&reply);
-            if status != 0 {
-                rt.diag.warn(&format!("object `{}`: Do{what} returned status {status}", slot.name()));
-            }
-            Ok(())
-        }
-        Ok(_) => Ok(()),
-        Err(e) => {
-            rt.diag.warn(&format!("object `{}` did not answer {what} ({e:?})", slot.name()));
-            Ok(())
-        }
-    }
-}
-
-/// The connection phase: one CONNECT.CFG line at a time (object-model 2.8.1).
-fn connect_all(rt: &Runtime, path: &std::path::Path, conns: &[cfg::Connection], lenient: bool) -> Result<()> {
-    for c in conns {
-        let (subject, observer) = (rt.service(&c.subject), rt.service(&c.observer));
-        let (Some(subject), Some(observer)) = (subject, observer) else {
-            let missing = if rt.service(&c.subject).is_none() { &c.subject } else { &c.observer };
-            let mut names = rt.service_names();
-            names.sort();
-            let msg = format!(
-                "unknown service `{missing}`; registered services: {}",
-                if names.is_empty() { "none".to_string() } else { names.join(", ") }
-            );
-            if lenient {
-                rt.diag.warn(&format!("{}:{}: {msg} (line skipped)", path.display(), c.line));
-                continue;
-            }
-            return Err(Error::config(path, Some(c.line), msg));
-        };
-        let Some(obs_slot) = rt.object(observer.oid) else { continue };
-        let module = obs_slot.module.get().expect("loaded");
-        let msg = module.connect_message(0, subject.oid, subject.selector, &c.subject);
-        match rt.call(observer.oid, observer.selector, msg, Some(CONNECT_TIMEOUT)) {
-            Ok(reply) => {
-                let status = if reply.is_empty() { 0 } else { module.status_of(&reply) };
-                if status != 0 {
-                    rt.diag.warn(&format!("{}:{}: connection refused (status {status})", path.display(), c.line));
-                } else {
-                    rt.diag.info(&format!("connected {} -> {}", c.subject, c.observer));
-                    if observer.oid < FIRST_OID {
-                        rt.vr.connected(rt, observer.oid, CONNECT_TIMEOUT);
-                    }
-                }
-            }
-            Err(e) => rt.diag.warn(&format!("{}:{}: connection failed ({e:?})", path.display(), c.line)),
-        }
-    }
-    Ok(())
-}
-
 /// Waits until `run_for` of virtual time has passed, a signal, or OPENR::Shutdown.
-fn wait_for_end(rt: &Runtime, signals: &crate::signals::Termination, run_for: Option<Duration>) -> Ended {
+fn wait_for_end(rt: &Runtime, run_for: Option<Duration>) -> Ended {
     loop {
         if rt.shutdown_requested.load(std::sync::atomic::Ordering::Acquire) {
             return Ended::Shutdown;
@@ -352,13 +269,27 @@ fn wait_for_end(rt: &Runtime, signals: &crate::signals::Termination, run_for: Op
         if run_for.is_some_and(|total| rt.clock.since_boot() >= total) {
             return Ended::TimeUp;
         }
-        let slice = Duration::from_millis(5);
-        match signals.wait(slice) {
-            Some(libc::SIGUSR1) => press_pause_button(rt),
-            Some(sig) => return Ended::Signal(sig),
-            None => {}
+        match rt.signal.load(std::sync::atomic::Ordering::Acquire) {
+            0 => std::thread::sleep(Duration::from_millis(5)),
+            sig => return Ended::Signal(sig),
         }
     }
+}
+
+/// Collects SIGINT/SIGTERM/SIGHUP (into `rt.signal`, seen by every phase, the boot
+/// included) and SIGUSR1 (the pause button) on a thread of its own.
+fn watch_signals(rt: &'static Runtime, signals: crate::signals::Termination) -> Result<()> {
+    std::thread::Builder::new()
+        .name("openr-signals".into())
+        .spawn(move || loop {
+            match signals.wait(Duration::from_secs(1)) {
+                Some(libc::SIGUSR1) => press_pause_button(rt),
+                Some(sig) => rt.signal.store(sig, std::sync::atomic::Ordering::Release),
+                None => {}
+            }
+        })
+        .map_err(|e| ErrorKind::Runtime(format!("cannot start the signal thread: {e}")))?;
+    Ok(())
 }
 
 /// The pause button toggles orsbPAUSE; pressing it also cuts motor power, as the

@@ -114,19 +114,54 @@ impl Clock {
         self.tick.notify_all();
     }
 
+    fn blocked(s: &State) -> bool {
+        (s.paused && s.steps == 0) || s.limit.is_some_and(|l| s.now >= l)
+    }
+
     /// Frame thread: blocks while paused with no steps left, or at the limit; consumes
     /// one step.
     pub fn wait_runnable(&self) {
+        self.park_until_runnable();
+        while !self.try_runnable() {
+            self.park_until_runnable();
+        }
+    }
+
+    /// Frame thread: whether a frame may run now (consuming a step when paused).
+    pub fn try_runnable(&self) -> bool {
         let mut s = self.lock();
-        while (s.paused && s.steps == 0) || s.limit.is_some_and(|l| s.now >= l) {
-            s.parked = true;
-            self.tick.notify_all();
-            s = self.tick.wait(s).unwrap_or_else(|p| p.into_inner());
+        if Self::blocked(&s) {
+            return false;
         }
         s.parked = false;
         if s.paused {
             s.steps -= 1;
         }
+        true
+    }
+
+    /// Frame thread: blocks while paused with no steps left, or at the limit.
+    pub fn park_until_runnable(&self) {
+        let mut s = self.lock();
+        while Self::blocked(&s) {
+            s.parked = true;
+            self.tick.notify_all();
+            s = self.tick.wait(s).unwrap_or_else(|p| p.into_inner());
+        }
+    }
+
+    /// Whether virtual time has reached its limit.
+    pub fn at_limit(&self) -> bool {
+        let s = self.lock();
+        s.limit.is_some_and(|l| s.now >= l)
+    }
+
+    /// Stops virtual time where it is now (the end of a run).
+    pub fn freeze(&self) {
+        let mut s = self.lock();
+        s.limit = Some(s.limit.map_or(s.now, |l| l.min(s.now)));
+        drop(s);
+        self.tick.notify_all();
     }
 
     /// Pauses and returns once no frame is in progress: the time returned is the time

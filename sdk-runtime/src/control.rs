@@ -106,6 +106,7 @@ pub fn command(rt: &Runtime, line: &str) -> String {
         }
         (Some("speed"), Some(v), None) => match v.parse::<Speed>() {
             Ok(s) => {
+                rt.sched.set_serial(s == Speed::Max);
                 rt.clock.set_speed(s);
                 "ok".into()
             }

@@ -171,7 +171,7 @@ extern "C" fn object_exit(status: i32) {
     if let (Some(rt), Some(me)) = (rt(), object::current()) {
         rt.diag.warn(&format!("object `{}` called exit({status}): it stops running, as on the robot", me.name()));
         me.stopped.store(true, Ordering::Release);
-        rt.idle.notify();
+        rt.sched.retire(me.index);
         // Answer a pending call so the caller (e.g. the boot sequence) is not left waiting.
         object::reply_current(&[]);
         loop {
@@ -328,12 +328,17 @@ extern "C" fn sleep_ns(ns: u64) {
         return;
     };
     let me = object::current();
+    let until = rt.clock.since_boot() + Duration::from_nanos(ns);
+    let mut turn = false;
     if let Some(s) = &me {
         s.sleeping.store(true, Ordering::Release);
-        rt.idle.notify();
+        turn = rt.sched.sleeping(s.index, until);
     }
-    rt.clock.sleep(Duration::from_nanos(ns));
+    rt.clock.wait_until(until);
     if let Some(s) = &me {
+        if turn {
+            rt.sched.woke(s.index);
+        }
         s.sleeping.store(false, Ordering::Release);
     }
 }

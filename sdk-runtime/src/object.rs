@@ -14,6 +14,8 @@ pub struct Envelope {
     pub data: Vec<u8>,
     /// Present when the sender waits for `Reply`/`Return` (a `Call`).
     pub reply: Option<SyncSender<Vec<u8>>>,
+    /// The calling object's index, when an object made the call.
+    pub caller: Option<usize>,
 }
 
 /// Everything the runtime knows about one loaded object.
@@ -27,10 +29,7 @@ pub struct ObjectSlot {
     pub tx: Sender<Envelope>,
     /// Set when the object called `exit()`: it no longer runs (object-model 1.5).
     pub stopped: AtomicBool,
-    /// Messages queued or being handled: zero everywhere means the system is idle, which
-    /// is when `--speed max` runs the next frame.
-    pub pending: std::sync::atomic::AtomicUsize,
-    /// Inside a sleep on virtual time: idle for the frame thread's purposes.
+    /// Inside a sleep on virtual time (frames may run during the boot then).
     pub sleeping: AtomicBool,
 }
 
@@ -46,18 +45,13 @@ impl ObjectSlot {
     pub fn is_stopped(&self) -> bool {
         self.stopped.load(Ordering::Acquire)
     }
-
-    /// No message waiting or running (or only a virtual-time sleep, or stopped).
-    pub fn is_idle(&self) -> bool {
-        self.is_stopped() || self.sleeping.load(Ordering::Acquire) || self.pending.load(Ordering::Acquire) == 0
-    }
 }
 
 thread_local! {
     /// The object whose thread this is.
     static CURRENT: RefCell<Option<Arc<ObjectSlot>>> = const { RefCell::new(None) };
     /// The reply channel of the message being processed, until answered.
-    static PENDING_REPLY: RefCell<Option<SyncSender<Vec<u8>>>> = const { RefCell::new(None) };
+    static PENDING_REPLY: RefCell<Option<(SyncSender<Vec<u8>>, Option<usize>)>> = const { RefCell::new(None) };
     /// Object index and selector being run, read by the crash handler.
     pub(crate) static RUNNING: Cell<(usize, u32)> = const { Cell::new((usize::MAX, u32::MAX)) };
     /// `CURRENT` as a plain pointer: the crash handler reads it without touching the
@@ -79,7 +73,10 @@ pub(crate) fn set_current(slot: Arc<ObjectSlot>) {
 /// Answers the current call, if any is pending. Returns whether a reply was sent.
 pub fn reply_current(bytes: &[u8]) -> bool {
     match PENDING_REPLY.with(|p| p.borrow_mut().take()) {
-        Some(tx) => {
+        Some((tx, caller)) => {
+            if let (Some(c), Some(rt)) = (caller, crate::runtime::Runtime::get()) {
+                rt.sched.answered(c);
+            }
             let _ = tx.send(bytes.to_vec());
             true
         }
@@ -90,15 +87,17 @@ pub fn reply_current(bytes: &[u8]) -> bool {
 /// The object's message loop; returns when the runtime drops its sender.
 pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(String)) {
     let module = slot.module.get().expect("loaded before the loop starts");
+    let sched = &crate::runtime::Runtime::get().expect("objects run in a runtime").sched;
     while let Ok(mut env) = rx.recv() {
+        sched.begin(slot.index, env.selector);
         let Some(entry) = module.entry(env.selector) else {
             warn(format!("object `{}` has no entry for selector {}: message dropped", slot.name(), env.selector));
-            if let Some(tx) = env.reply {
-                let _ = tx.send(Vec::new());
-            }
+            PENDING_REPLY.with(|p| *p.borrow_mut() = env.reply.take().map(|tx| (tx, env.caller)));
+            reply_current(&[]);
+            sched.end(slot.index);
             continue;
         };
-        PENDING_REPLY.with(|p| *p.borrow_mut() = env.reply.take());
+        PENDING_REPLY.with(|p| *p.borrow_mut() = env.reply.take().map(|tx| (tx, env.caller)));
         RUNNING.with(|r| r.set((slot.index, env.selector)));
         // Keep a little slack after the message: C++ code may read a struct slightly
         // larger than what a short sender wrote.
@@ -109,10 +108,6 @@ pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(
         // A call whose entry returned without Reply/Return gets an empty answer, so the
         // caller is never left waiting forever.
         reply_current(&[]);
-        if slot.pending.fetch_sub(1, Ordering::AcqRel) == 1 {
-            if let Some(rt) = crate::runtime::Runtime::get() {
-                rt.idle.notify();
-            }
-        }
+        sched.end(slot.index);
     }
 }

@@ -65,8 +65,10 @@ pub struct Runtime {
     /// True until every Start has been sent: at `--speed max` virtual time waits for the
     /// boot sequence too (unless an object sleeps in it), so runs are reproducible.
     pub booting: AtomicBool,
-    /// Signalled when an object may have become idle (see `quiescent`).
-    pub idle: crate::idle::IdleWait,
+    /// Whose turn it is to run a message (reproducible `--speed max`).
+    pub sched: crate::sched::Sched,
+    /// SIGINT/SIGTERM/SIGHUP received (0: none), seen by every phase of the run.
+    pub signal: std::sync::atomic::AtomicI32,
 }
 
 static RUNTIME: OnceLock<Runtime> = OnceLock::new();
@@ -79,12 +81,11 @@ pub enum CallError {
     Timeout,
 }
 
-fn enqueue(slot: &ObjectSlot, env: Envelope) -> Result<(), CallError> {
-    slot.pending.fetch_add(1, Ordering::AcqRel);
-    slot.tx.send(env).map_err(|_| {
-        slot.pending.fetch_sub(1, Ordering::AcqRel);
-        CallError::UnknownDestination
-    })
+fn enqueue(sched: &crate::sched::Sched, slot: &ObjectSlot, env: Envelope) -> Result<(), CallError> {
+    if sched.push(slot.index, || slot.tx.send(env).is_ok()) {
+        return Ok(());
+    }
+    Err(CallError::UnknownDestination)
 }
 
 impl Runtime {
@@ -112,34 +113,54 @@ impl Runtime {
     /// Queues a message (asynchronous `Send`).
     pub fn send(&self, dest: usize, selector: u32, data: Vec<u8>) -> Result<(), CallError> {
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
-        enqueue(&slot, Envelope { selector, data, reply: None })
+        enqueue(&self.sched, &slot, Envelope { selector, data, reply: None, caller: None })
     }
 
-    /// Whether every object is idle (nothing queued or running, or blocked on console
-    /// input) and the boot sequence is not between two steps — or an object waits for
-    /// virtual time to pass.
-    pub fn quiescent(&self) -> bool {
+    /// Whether a frame may start while every object is idle: the boot sequence is not
+    /// between two steps, or an object waits for virtual time to pass.
+    pub fn frames_allowed(&self) -> bool {
         let objects = self.objects.read().unwrap_or_else(|p| p.into_inner());
-        let sleeping = objects.iter().any(|s| s.sleeping.load(Ordering::Acquire));
-        let idle = |s: &Arc<ObjectSlot>| s.is_idle() || crate::console::input::blocked_reading(s.index);
-        objects.iter().all(idle) && (sleeping || !self.booting.load(Ordering::Acquire))
+        objects.iter().any(|s| s.sleeping.load(Ordering::Acquire)) || !self.booting.load(Ordering::Acquire)
     }
 
     /// Sends and waits for the answer (`Call`), at most `timeout` if given.
     pub fn call(&self, dest: usize, selector: u32, data: Vec<u8>, timeout: Option<Duration>) -> Result<Vec<u8>, CallError> {
-        if crate::object::current().is_some_and(|me| me.oid == dest) {
+        self.call_with(dest, selector, data, timeout, || {})
+    }
+
+    /// Queues a call from outside the objects (the boot sequence) and returns where its
+    /// answer will arrive.
+    pub fn call_start(&self, dest: usize, selector: u32, data: Vec<u8>) -> Result<mpsc::Receiver<Vec<u8>>, CallError> {
+        let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
+        let (tx, rx) = mpsc::sync_channel(1);
+        enqueue(&self.sched, &slot, Envelope { selector, data, reply: Some(tx), caller: None })?;
+        Ok(rx)
+    }
+
+    /// `call`, running `queued` once the message is queued (the boot sequence gives the
+    /// turn back there).
+    pub fn call_with(&self, dest: usize, selector: u32, data: Vec<u8>, timeout: Option<Duration>, queued: impl FnOnce()) -> Result<Vec<u8>, CallError> {
+        let me = crate::object::current();
+        if me.as_ref().is_some_and(|me| me.oid == dest) {
             return Err(CallError::SelfCall);
         }
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
         let (tx, rx) = mpsc::sync_channel(1);
-        enqueue(&slot, Envelope { selector, data, reply: Some(tx) })?;
-        match timeout {
+        let caller = me.as_ref().map(|m| m.index);
+        enqueue(&self.sched, &slot, Envelope { selector, data, reply: Some(tx), caller })?;
+        queued();
+        let held = caller.is_some_and(|i| self.sched.calling(i));
+        let answer = match timeout {
             Some(t) => rx.recv_timeout(t).map_err(|e| match e {
                 RecvTimeoutError::Timeout => CallError::Timeout,
                 RecvTimeoutError::Disconnected => CallError::UnknownDestination,
             }),
             None => rx.recv().map_err(|_| CallError::UnknownDestination),
+        };
+        if let (true, Some(i)) = (held, caller) {
+            self.sched.call_returned(i);
         }
+        answer
     }
 
     pub fn register(&self, name: &str, oid: usize, selector: u32) -> bool {
@@ -164,6 +185,8 @@ impl Runtime {
     }
 
     pub fn request_shutdown(&self) {
+        // No frame after this one: where the run ends depends on the program only.
+        self.clock.freeze();
         self.shutdown_requested.store(true, Ordering::Release);
     }
 }

@@ -123,7 +123,8 @@ impl VrService {
         let provider = self.wiring().providers.iter().flatten().find(|p| p.0 == oid).copied();
         let Some((oid, sel)) = provider else { return false };
         let ev = VrEvent { kind: EVENT_CONNECTED, service: 0, token: 0, mem_id: 0, size: 0 };
-        rt.call(oid, sel, ev.bytes(), Some(timeout)).is_ok()
+        rt.sched.boot_turn();
+        rt.call_with(oid, sel, ev.bytes(), Some(timeout), || rt.sched.release()).is_ok()
     }
 
     /// A command vector received by the effector from subject (oid, selector).
@@ -237,20 +238,39 @@ impl VrService {
 
 /// The frame thread: runs robot frames at the clock's speed. In real time (or a factor
 /// of it) a frame that cannot start on time is counted and reported, never replayed; at
-/// `max` each frame starts as soon as every object has handled everything sent to it,
-/// so no sensor frame is ever dropped. Due timers fire after each frame.
+/// `max` each frame starts as soon as every object has handled everything sent to it
+/// (or after `sched::FRAME_WORK` messages when they never do), so no sensor frame is
+/// ever dropped. Due timers fire after each frame.
 pub fn run_frames(rt: &'static Runtime) -> ! {
     rt.vr.peers.wait_for_clock_owner(rt);
     let mut next = Instant::now();
     let mut late = 0u64;
     let mut late_reported = 0u64;
+    let mut busy_reported = false;
     loop {
-        rt.clock.wait_runnable();
-        match rt.clock.speed() {
-            Speed::Max => {
-                wait_until_idle(rt);
-                next = Instant::now();
+        let turn = rt.clock.speed() == Speed::Max;
+        if turn {
+            // The turn first, then the clock: at the end of virtual time the objects
+            // stand still at the same message every run.
+            let busy = rt.sched.frame_turn(|| rt.frames_allowed());
+            if !busy.is_empty() && !busy_reported {
+                report_busy(rt, &busy);
+                busy_reported = true;
             }
+            if !rt.clock.try_runnable() {
+                if rt.clock.at_limit() {
+                    rt.sched.hand_over();
+                } else {
+                    rt.sched.release();
+                }
+                rt.clock.park_until_runnable();
+                continue;
+            }
+        } else {
+            rt.clock.wait_runnable();
+        }
+        match rt.clock.speed() {
+            Speed::Max => next = Instant::now(),
             Speed::Factor(f) => {
                 let period = FRAME.div_f64(f);
                 next += period;
@@ -271,13 +291,37 @@ pub fn run_frames(rt: &'static Runtime) -> ! {
         rt.vr.step(rt);
         rt.vr.frames.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let now = rt.clock.advance();
+        rt.sched.wake_sleepers(now);
         rt.timers.fire_due(now, |dest, sel, msg| {
             let _ = rt.send(dest, sel, msg);
         });
+        if turn {
+            rt.sched.release();
+        }
+        report_stuck(rt);
     }
 }
 
-/// Waits until no object has anything queued or running.
-fn wait_until_idle(rt: &Runtime) {
-    rt.idle.wait_until(|| rt.quiescent());
+/// Once per run: the objects that kept the robot from ever being idle (they message
+/// each other without end), so frames start every FRAME_WORK messages.
+fn report_busy(rt: &Runtime, busy: &[(usize, u64)]) {
+    let objects = rt.all_objects();
+    let names: Vec<String> = busy.iter().filter_map(|&(i, n)| objects.get(i).map(|s| format!("`{}` ({n})", s.name()))).collect();
+    rt.diag.warn(&format!(
+        "virtual robot: the objects are never all idle; a frame starts after every {} messages (messages handled since the last frame: {})",
+        crate::sched::FRAME_WORK,
+        names.join(", ")
+    ));
+}
+
+/// Objects whose one message outran the watchdog: named once each.
+fn report_stuck(rt: &Runtime) {
+    for (i, sel) in rt.sched.take_stuck() {
+        let Some(slot) = rt.all_objects().get(i).cloned() else { continue };
+        rt.diag.warn(&format!(
+            "object `{}` has been running {} for more than the watchdog's time: it runs on its own, virtual time goes on without it",
+            slot.name(),
+            crate::lifecycle::entry_name(sel)
+        ));
+    }
 }

@@ -105,6 +105,9 @@ pub struct Args {
     /// Send what the robot addresses to ROBOT_IP[:PORT] to HOST_IP[:PORT] instead, e.g. 10.0.1.2=127.0.0.1 for a program with its server's LAN address built in (repeatable)
     #[arg(long = "net-map", value_name = "ROBOT=HOST", value_parser = sdk_runtime::net::config::parse_addr_map)]
     net_map: Vec<sdk_runtime::net::config::AddrMap>,
+    /// Real time an object may take to answer Init/Stop/Destroy or a connection, or to run one message at --speed max, before it is reported stuck (e.g. 5s, 500ms; 0.1 s to 1 h)
+    #[arg(long, value_name = "DURATION", default_value = "5s", value_parser = parse_watchdog)]
+    watchdog: Duration,
     /// Add N to every port the robot binds (privileged ports first move to 10000+port), so two robots can run one program
     #[arg(long, value_name = "N", default_value_t = 0)]
     port_offset: u16,
@@ -152,6 +155,14 @@ pub fn parse_duration(s: &str) -> Result<Duration, String> {
     Duration::try_from_secs_f64(v * mult).map_err(|_| format!("`{s}` is too long a duration (at most {} s)", Duration::MAX.as_secs()))
 }
 
+fn parse_watchdog(s: &str) -> Result<Duration, String> {
+    let d = parse_duration(s)?;
+    if !(Duration::from_millis(100)..=Duration::from_secs(3600)).contains(&d) {
+        return Err(format!("`{s}` is out of range: give 0.1 s to 1 h"));
+    }
+    Ok(d)
+}
+
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     shell.set_quiet(args.quiet);
     let world = check_sim_options(&args)?;
@@ -192,6 +203,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         diag: Diag { quiet: args.quiet, verbose: args.verbose },
         lenient_connect: args.lenient_connect,
         fp_traps: !args.no_fp_traps,
+        watchdog: args.watchdog,
     };
     if let Some(tool) = args.gdb.then_some(Debugger::Gdb).or_else(|| args.valgrind.clone().map(Debugger::Valgrind)) {
         let mut cmd = debugger::command(&tool, &root, &args.tool_args, &["--gdb", "--valgrind", "--tool-arg"])?;
@@ -216,6 +228,9 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         Ended::Shutdown => "OPENR::Shutdown".to_string(),
     };
     shell.status("Finished", &format!("{} ({how}; {} frames, {} late)", ms_dir.display(), outcome.frames, outcome.late_frames));
+    if !outcome.failures.is_empty() {
+        anyhow::bail!("the run failed:\n  {}", outcome.failures.join("\n  "));
+    }
     Ok(())
 }
 
@@ -298,6 +313,7 @@ fn simulate(args: &Args, world: &[Robot], root: &Path, shell: &mut Shell) -> any
         };
         opt("--for", args.run_for.map(|d| format!("{}ms", d.as_millis()).into()));
         opt("--design", args.design.clone().map(Into::into));
+        opt("--watchdog", Some(format!("{}ms", args.watchdog.as_millis()).into()));
         opt("--speed", args.speed.clone().map(Into::into));
         opt("--base", args.base.clone().map(Into::into));
         opt("--trace", args.trace.as_ref().map(|t| per_robot(t, k).into()));

@@ -108,3 +108,58 @@ fn numeric_options_out_of_range_are_refused_by_name() {
     assert!(code.is_some_and(|c| c != 0) && err.contains("--for") && err.contains("too long"), "{err}");
     assert!(!err.contains("panicked"), "{err}");
 }
+
+/// movelegs and blinkleds in one Memory Stick: six subjects of the one effector, like
+/// MovingLegs7 (connection ids are given by whose first vector arrives first).
+fn legs_and_leds() -> (crate::support::Built, crate::support::Built, std::path::PathBuf) {
+    let (legs, leds) = (build("movelegs"), build("blinkleds"));
+    let ms = legs.dir.path().join("legs-and-leds/MS");
+    let conf = ms.join("OPEN-R/MW/CONF");
+    std::fs::create_dir_all(&conf).unwrap();
+    crate::support::copy_tree(&legs.ms().join("OPEN-R/MW/OBJS"), &ms.join("OPEN-R/MW/OBJS"));
+    crate::support::copy_tree(&leds.ms().join("OPEN-R/MW/OBJS"), &ms.join("OPEN-R/MW/OBJS"));
+    for cfg in ["OBJECT.CFG", "CONNECT.CFG"] {
+        let text = [&legs, &leds].iter().map(|p| std::fs::read_to_string(p.ms().join("OPEN-R/MW/CONF").join(cfg)).unwrap()).collect::<Vec<_>>().join("\n");
+        std::fs::write(conf.join(cfg), text).unwrap();
+    }
+    (legs, leds, ms)
+}
+
+#[test]
+fn multi_object_programs_are_byte_identical_over_20_runs() {
+    let multi = build("objcomm-multi");
+    let leds = build("blinkleds");
+    let (_legs, _leds, combo) = legs_and_leds();
+    let dir = tempfile::tempdir().unwrap();
+    for (name, ms) in [("objcomm-multi", multi.ms()), ("blinkleds", leds.ms()), ("movelegs+blinkleds", combo)] {
+        let mut distinct = std::collections::BTreeSet::new();
+        let mut first = None;
+        for i in 0..20 {
+            let trace = dir.path().join(format!("{name}{i}.jsonl"));
+            let out = run_ms(&ms, &["--speed", "max", "--for", "1s", "--trace", trace.to_str().unwrap()]);
+            assert_eq!(out.code, Some(0), "{name}: {}", out.stderr);
+            let run = (out.stdout, std::fs::read(&trace).unwrap());
+            first.get_or_insert_with(|| run.clone());
+            distinct.insert(run);
+        }
+        let (stdout, trace) = first.unwrap();
+        assert!(stdout.lines().count() >= 4 && (name == "objcomm-multi" || trace.len() > 1000), "{name} ran:\n{stdout}");
+        assert_eq!(distinct.len(), 1, "{name}: 20 runs at --speed max gave {} different outputs", distinct.len());
+    }
+}
+
+#[test]
+fn objects_that_are_never_idle_still_see_time_pass() {
+    let p = build("pingpong");
+    let out = run_ms(&p.ms(), &["--speed", "max", "--for", "2s"]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    assert!(out.stderr.contains("(time limit reached; 250 frames"), "--for 2s is 250 frames:\n{}", out.stderr);
+    let warnings: Vec<&str> = out.stderr.lines().filter(|l| l.contains("never all idle")).collect();
+    assert_eq!(warnings.len(), 1, "one warning:\n{}", out.stderr);
+    assert!(warnings[0].contains("`ping`") && warnings[0].contains("`pong`"), "it names the busy objects: {}", warnings[0]);
+    // The system time goes on while they play: each report later than the one before.
+    let times: Vec<u64> = out.lines_starting("Ping : ").iter().filter_map(|l| l.strip_suffix(" ms")?.rsplit(' ').next()?.parse().ok()).collect();
+    assert!(times.len() >= 3 && times.windows(2).all(|w| w[1] > w[0]) && *times.last().unwrap() <= 2000, "{times:?}\n{}", out.stdout);
+    let again = run_ms(&p.ms(), &["--speed", "max", "--for", "2s"]);
+    assert_eq!(again.stdout, out.stdout, "frames come after a counted number of messages: the same every run");
+}

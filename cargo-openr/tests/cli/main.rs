@@ -10,6 +10,7 @@ mod devloop;
 mod front;
 mod legacy_c;
 mod legacy_repair;
+mod lifecycle;
 mod link;
 mod load;
 mod mujoco;
