@@ -19,6 +19,9 @@ pub struct Args {
     /// (default: the dev profile, C++ `-O0 -g`)
     #[arg(long)]
     release: bool,
+    /// Show each compiler and linker command
+    #[arg(short, long)]
+    verbose: bool,
     /// Compiler and linker processes at once (default: the number of cores)
     #[arg(short = 'j', long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
     jobs: Option<u32>,
@@ -59,6 +62,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         cxxflags,
         ldflags,
         packages: args.packages,
+        verbose: args.verbose,
         jobs: args.jobs.map_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()), |j| j as usize),
         color: shell.color() && args.message_format != MessageFormat::Json,
     };
@@ -68,6 +72,8 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         (Event::Compiling { object, kind }, true) => {
             shell.out(&json!({ "reason": "compiling", "package_id": object, "kind": kind.label() }).to_string())
         }
+        (Event::Running { command, .. }, false) => shell.status("Running", &format!("`{command}`")),
+        (Event::Running { object, command }, true) => shell.out(&json!({ "reason": "running", "package_id": object, "command": command }).to_string()),
         (Event::Artifact { .. }, false) => {}
         (Event::Artifact { object, kind, bin, fresh }, true) => shell.out(
             &json!({ "reason": "compiler-artifact", "package_id": object, "kind": kind.label(), "filenames": [bin], "fresh": fresh })

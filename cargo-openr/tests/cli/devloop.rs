@@ -181,3 +181,29 @@ fn parallel_builds_give_the_same_output_in_the_same_order() {
     let out = cargo_openr_in(&dir, &["build", "-j", "0", "--sdk", sdk_root().to_str().unwrap()], &[]);
     assert_eq!(out.status.code(), Some(2), "{}", text(&out));
 }
+
+#[test]
+fn verbose_builds_show_each_compiler_and_linker_command() {
+    let (_tmp, dir) = program("legacy");
+    let out = openr_build(&dir, &["-v"], &[]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    let compiles: Vec<&str> = err.lines().filter(|l| l.trim_start().starts_with("Running `") && l.contains("mipsel-linux-g++")).collect();
+    assert_eq!(compiles.len(), 2, "the stub and Legacy.cc: {err}");
+    assert!(compiles.iter().any(|l| l.contains(" -O0 -g ") && l.contains("-c ") && l.ends_with("Legacy/Legacy.cc`")), "{err}");
+    assert!(err.lines().any(|l| l.contains("-shared") && l.contains("legacy.bin")), "mkbin's link command: {err}");
+    let quiet = openr_build(&dir, &[], &[]);
+    assert!(!String::from_utf8_lossy(&quiet.stderr).contains("Running `"), "{}", text(&quiet));
+}
+
+#[test]
+fn c_units_are_compiled_as_c() {
+    // legacy-repair's OldCode object has Pixels.c beside its C++ units.
+    let (_tmp, dir) = program("legacy-repair");
+    let out = openr_build(&dir, &["-v"], &[]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.lines().any(|l| l.contains("mipsel-linux-gcc ") && l.ends_with("Pixels.c`")), "{err}");
+    let obj = dir.join("target/openr").join("OldCode").join("Pixels.o");
+    let (ok, syms) = run(Command::new("nm").arg(&obj));
+    assert!(ok, "{syms}");
+    assert!(syms.lines().any(|l| l.ends_with(" T SumRow")), "C linkage, not a mangled name: {syms}");
+}

@@ -77,7 +77,9 @@ pub(super) fn plan<'a>(opts: &BuildOptions, project: &Path, o: &'a Object, comma
     let out = project.join("target/openr").join(&o.name);
     fs::create_dir_all(&out).with_context(|| format!("cannot create {}", out.display()))?;
     let root = &opts.sdk;
-    let cxx = root.join("bin/mipsel-linux-g++");
+    // C units go through the C compiler, as a Makefile's `%.o: %.c` rule with $(CC) does:
+    // compiled as C++ their functions would get C++ linkage and not link with C callers.
+    let (cxx, cc) = (root.join("bin/mipsel-linux-g++"), root.join("bin/mipsel-linux-gcc"));
     let stub_cfg = o.dir.join("stub.cfg");
     let stub_cc = out.join(format!("{}Stub.cc", o.name));
     let mut sources: Vec<PathBuf> = fs::read_dir(&o.dir)?
@@ -117,7 +119,8 @@ pub(super) fn plan<'a>(opts: &BuildOptions, project: &Path, o: &'a Object, comma
         let obj = out.join(format!("{stem}.o"));
         let dep = out.join(format!("{stem}.d"));
         let cmd_file = out.join(format!("{stem}.cmd"));
-        let mut args: Vec<String> = vec![cxx.display().to_string()];
+        let compiler = if src.extension().is_some_and(|e| e == "c") { &cc } else { &cxx };
+        let mut args: Vec<String> = vec![compiler.display().to_string()];
         args.extend(flags.iter().cloned());
         args.extend(["-o".into(), obj.display().to_string(), "-c".into(), src.display().to_string()]);
         commands.push(json!({ "directory": out, "arguments": host_command(&args, &src)?, "file": src, "output": obj }));
@@ -198,7 +201,7 @@ fn link(opts: &BuildOptions, p: &Plan, objs_dir: &Path) -> Result<(bool, PathBuf
         fresh = false;
         // mkbin adds `-L<root>/OPEN_R/lib` and the OPEN-R archives (default_libs) itself.
         let mk = openr_wrappers::mkbin::Options {
-            verbose: false,
+            verbose: opts.verbose,
             output: Some(bin.clone()),
             prefix: None,
             ocf: Some(p.ocf.clone()),
@@ -222,6 +225,11 @@ pub(super) fn build_all(opts: &BuildOptions, plans: &[Plan], objs_dir: &Path, em
         emit(Event::Compiling { object: p.object.name.clone(), kind: Kind::Cxx });
     }
     let units: Vec<(&Plan, &Unit)> = plans.iter().flat_map(|p| p.stale_units.iter().map(move |u| (p, u))).collect();
+    if opts.verbose {
+        for (p, u) in &units {
+            emit(Event::Running { object: p.object.name.clone(), command: u.args.join(" ") });
+        }
+    }
     let results = pool(units.len(), opts.jobs, &|i| compile(opts, &units[i].0.out, units[i].1));
     let mut first_failure = None;
     for ((p, u), r) in units.iter().zip(results) {

@@ -43,6 +43,8 @@ pub struct BuildOptions {
     /// Ask the compiler for coloured diagnostics (`-fdiagnostics-color=always`; not part
     /// of the recorded command line, so switching it rebuilds nothing).
     pub color: bool,
+    /// Show each compiler command (`-v`; mkbin shows its link commands itself).
+    pub verbose: bool,
     /// At most this many compiler or linker processes at once (`-j`).
     pub jobs: usize,
     /// Only these objects (by name), all when empty.
@@ -78,6 +80,8 @@ impl Kind {
 pub enum Event {
     /// Compiler work starts for an object.
     Compiling { object: String, kind: Kind },
+    /// A command about to run (`-v`), as the shell would show it.
+    Running { object: String, command: String },
     /// An object's `.BIN` is in place; `fresh` when nothing had to be done.
     Artifact { object: String, kind: Kind, bin: PathBuf, fresh: bool },
     /// A compiler's output for an object (`level` is `error` or `warning`).
