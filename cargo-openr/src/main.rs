@@ -48,6 +48,9 @@ fn run_as_tool(tool: openr_wrappers::Tool, name: &str, args: Vec<OsString>) -> u
 
 /// `start-rp-openr [run options]`: `cargo openr run MS` for the RP host program in the cwd.
 fn start_rp_openr(extra: Vec<OsString>) -> ExitCode {
+    // libOPENR refuses the calls Sony's RP OPEN-R does not offer host objects (IG4.3).
+    // Set before any thread exists.
+    std::env::set_var("OPENR_RP_HOST", "1");
     let mut shell = shell::Shell::new();
     let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
     let root = ops::rp::own_root();

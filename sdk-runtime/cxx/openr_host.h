@@ -216,6 +216,11 @@ struct openr_vr_event {
 /* Returns the runtime's table, or NULL when the object runs outside cargo-openr. */
 const struct openr_host_api* openr_host(void);
 
+/* Whether `function` is one of the OPEN-R calls Sony's Remote Processing OPEN-R does not
+ * offer host objects (IG4.3) and this object runs as one (start-rp-openr sets
+ * OPENR_RP_HOST=1). The first call for each function says so on stderr. */
+int openr_rp_unavailable(const char* function);
+
 /*
  * Exported by every object (libmcoopstub) for the runtime, which does not know the C++
  * layouts of OPEN-R messages: it asks the object to build and read them.  Each returns

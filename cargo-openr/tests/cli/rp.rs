@@ -169,3 +169,21 @@ fn rp_all_host_fan_out_and_fan_in_match_the_robot_run() {
     assert_eq!(lines.iter().filter(|l| l.starts_with("SampleObserver3::Notify()")).count(), 4, "{host_out}");
     assert_eq!(lines, sample(&robot.stdout));
 }
+
+/// IG4.3: calls host programs cannot make return oFAIL under start-rp-openr, reported once.
+#[test]
+fn rp_host_objects_get_ofail_for_robot_only_calls() {
+    let built = build("rp-hostapi");
+    let dir = built.dir.path().join("rp-hostapi");
+    let host = start_rp(&dir.join("RP/host"), &["--for", "1s", "--speed", "max"]);
+    let (stdout, stderr) = text(&host);
+    assert!(host.status.success(), "{stderr}");
+    let lines: Vec<&str> = stdout.lines().filter(|l| l.starts_with("HostApi:")).collect();
+    assert_eq!(lines, ["HostApi: GetRobotDesign ok (ERS-7)", "HostApi: NewSoundVectorData oFAIL"], "{stdout}\n{stderr}");
+    let note = "OPENR::NewSoundVectorData: not available to Remote Processing OPEN-R host objects; returns oFAIL";
+    assert_eq!(stderr.matches(note).count(), 1, "{stderr}");
+    // The robot build of the same source has every call.
+    let robot = run_ms(&dir.join("MS"), &["--for", "1s", "--speed", "max"]);
+    assert_eq!(robot.lines_starting("HostApi:"), ["HostApi: GetRobotDesign ok (ERS-7)", "HostApi: NewSoundVectorData ok"], "{}", robot.stderr);
+    assert!(!robot.stderr.contains("not available"), "{}", robot.stderr);
+}

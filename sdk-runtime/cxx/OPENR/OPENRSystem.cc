@@ -62,6 +62,7 @@ OStatus GetRobotDesign(char* design)
 
 OStatus FindDesignData(const char* keyword, ODesignDataID* id, byte** data, size_t* size)
 {
+    if (openr_rp_unavailable("FindDesignData")) return oFAIL;
     const openr_host_api* api = openr_host();
     if (api == 0) return oFAIL;
     if (keyword == 0 || id == 0 || data == 0 || size == 0) return oINVALID_ARG;
@@ -78,6 +79,7 @@ OStatus FindDesignData(const char* keyword, ODesignDataID* id, byte** data, size
 
 OStatus DeleteDesignData(ODesignDataID id)
 {
+    if (openr_rp_unavailable("DeleteDesignData")) return oFAIL;
     const openr_host_api* api = openr_host();
     if (api == 0) return oFAIL;
     return api->delete_design_data(id);
@@ -158,6 +160,7 @@ OStatus GetPowerStatus(OPowerStatus* powerStatus)
 
 OStatus ObservePowerStatus(const OPowerStatus& notifyStatus, const OServiceEntry& entry)
 {
+    if (openr_rp_unavailable("ObservePowerStatus")) return oFAIL;
     const openr_host_api* api = openr_host();
     if (api == 0) return oNOT_FOUND;
     if (!entry.IsValid()) return oINVALID_ARG;
@@ -169,6 +172,7 @@ OStatus ObservePowerStatus(const OPowerStatus& notifyStatus, const OServiceEntry
 
 OStatus UnobservePowerStatus(const OServiceEntry& entry)
 {
+    if (openr_rp_unavailable("UnobservePowerStatus")) return oFAIL;
     const openr_host_api* api = openr_host();
     if (api == 0) return oNOT_FOUND;
     return api->observe_power(entry.GetOID().GetAddress(), entry.GetSelector(), 0) == 0
@@ -185,6 +189,7 @@ OStatus SetMotorPower(OPower power)
 
 OStatus Shutdown(const OBootCondition& bootCondition)
 {
+    if (openr_rp_unavailable("Shutdown")) return oFAIL;
     (void)bootCondition;   // the emulator does not reboot by itself
     const openr_host_api* api = openr_host();
     if (api == 0) return oNOT_FOUND;

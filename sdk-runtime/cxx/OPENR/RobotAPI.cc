@@ -75,6 +75,7 @@ OStatus ClosePrimitive(OPrimitiveID primitiveID)
 OStatus ControlPrimitive(OPrimitiveID primitiveID, OPrimitiveRequest request, void* param,
                          size_t paramSize, void* result, size_t resultSize)
 {
+    if (openr_rp_unavailable("ControlPrimitive")) return oFAIL;
     const openr_host_api* api = host();
     return api == 0 ? oFAIL
                     : api->control_primitive(primitiveID, request, param, paramSize, result, resultSize);
@@ -90,20 +91,23 @@ OStatus DeleteCommandVectorData(MemoryRegionID memID) { return deleteVector(memI
 OStatus NewSoundVectorData(size_t numSounds, size_t dataSize, MemoryRegionID* memID,
                            OSoundVectorData** baseAddr)
 {
+    if (openr_rp_unavailable("NewSoundVectorData")) return oFAIL;
     return newVector(OPENR_VECTOR_SOUND, numSounds, dataSize, memID, baseAddr);
 }
 
-OStatus DeleteSoundVectorData(MemoryRegionID memID) { return deleteVector(memID); }
+OStatus DeleteSoundVectorData(MemoryRegionID memID) { if (openr_rp_unavailable("DeleteSoundVectorData")) return oFAIL; return deleteVector(memID); }
 
 OStatus NewCdtVectorData(MemoryRegionID* memID, OCdtVectorData** baseAddr)
 {
+    if (openr_rp_unavailable("NewCdtVectorData")) return oFAIL;
     return newVector(OPENR_VECTOR_CDT, 8, 0, memID, baseAddr);
 }
 
-OStatus DeleteCdtVectorData(MemoryRegionID memID) { return deleteVector(memID); }
+OStatus DeleteCdtVectorData(MemoryRegionID memID) { if (openr_rp_unavailable("DeleteCdtVectorData")) return oFAIL; return deleteVector(memID); }
 
 OStatus SetCdtVectorData(MemoryRegionID memID)
 {
+    if (openr_rp_unavailable("SetCdtVectorData")) return oFAIL;
     const openr_host_api* api = host();
     return api == 0 ? oFAIL : api->set_cdt(memID);
 }
