@@ -75,3 +75,31 @@ fn a_missing_valgrind_tool_is_the_tools_own_error() {
     assert_eq!(out.status.code(), Some(2), "{}", text(&out));
     let _ = run;
 }
+
+#[test]
+fn a_core_dump_is_opt_in_after_the_report() {
+    use std::os::unix::process::ExitStatusExt;
+    let (_tmp, dir) = program("crash", false);
+    std::fs::write(dir.join("MS/OPEN-R/MW/CONF/CRASH.CFG"), "1\n").unwrap();
+    let cores = |d: &Path| std::fs::read_dir(d).unwrap().flatten().filter(|e| e.file_name().to_string_lossy().starts_with("core")).count();
+    let run_in = |cwd: &Path, core: Option<&str>| {
+        let mut c = Command::new(crate::support::exe());
+        c.args(["run", "--for", "5s", "--speed", "max", "--sdk", sdk_root().to_str().unwrap()]).arg(dir.join("MS")).current_dir(cwd);
+        if let Some(v) = core {
+            c.env("OPENR_CORE_DUMP", v);
+        }
+        c.output().unwrap()
+    };
+    let plain = tempfile::tempdir().unwrap();
+    let out = run_in(plain.path(), None);
+    assert_eq!(out.status.code(), Some(128 + 11), "{}", text(&out));
+    assert_eq!(cores(plain.path()), 0);
+    let with_core = tempfile::tempdir().unwrap();
+    let out = run_in(with_core.path(), Some("1"));
+    assert_eq!(out.status.signal(), Some(libc::SIGSEGV), "dies of the signal itself: {}", text(&out));
+    assert!(text(&out).contains("error: object `crash`") && text(&out).contains("backtrace:"), "the report comes first: {}", text(&out));
+    let pattern = std::fs::read_to_string("/proc/sys/kernel/core_pattern").unwrap_or_default();
+    if !pattern.starts_with('|') && !pattern.contains('/') {
+        assert_eq!(cores(with_core.path()), 1, "core_pattern {pattern:?}: a core file in the working directory");
+    }
+}

@@ -27,6 +27,9 @@ const ALT_STACK: usize = 256 * 1024;
 pub const OWN_THREAD: u32 = u32::MAX - 1;
 
 static FP_TRAPS: AtomicBool = AtomicBool::new(true);
+/// `OPENR_CORE_DUMP=1`: after the report, die of the signal itself so the kernel writes a
+/// core file (the core size limit is raised for the run).
+static CORE_DUMP: AtomicBool = AtomicBool::new(false);
 static FIRST_SIGNAL: std::sync::atomic::AtomicI32 = std::sync::atomic::AtomicI32::new(0);
 
 thread_local! {
@@ -43,6 +46,19 @@ pub fn set_fp_traps(on: bool) {
 
 /// Installs the fault handlers for the whole process.
 pub fn install() {
+    if std::env::var_os("OPENR_CORE_DUMP").is_some_and(|v| v == "1") {
+        CORE_DUMP.store(true, Ordering::Release);
+        let unlimited = libc::rlimit { rlim_cur: libc::RLIM_INFINITY, rlim_max: libc::RLIM_INFINITY };
+        // SAFETY: plain syscalls on this process; a hard limit below infinity is kept.
+        unsafe {
+            if libc::setrlimit(libc::RLIMIT_CORE, &unlimited) != 0 {
+                let mut cur = std::mem::zeroed::<libc::rlimit>();
+                libc::getrlimit(libc::RLIMIT_CORE, &mut cur);
+                cur.rlim_cur = cur.rlim_max;
+                libc::setrlimit(libc::RLIMIT_CORE, &cur);
+            }
+        }
+    }
     frames::warm_up();
     exits::remember_pid();
     std::hint::black_box(exits::keep());
@@ -158,7 +174,23 @@ extern "C" fn on_fault(sig: libc::c_int, info: *mut libc::siginfo_t, ctx: *mut c
         out.flush();
     }
     exits::flush_console();
+    if CORE_DUMP.load(Ordering::Acquire) {
+        dump_core(sig);
+    }
     exit_now(128 + sig);
+}
+
+/// Dies of `sig` with its default action (a core file); returns only if that failed.
+fn dump_core(sig: i32) {
+    // SAFETY: async-signal-safe calls; SIG_DFL for the signal, then it is raised again
+    // (unblocked: SA_NODEFER left it deliverable).
+    unsafe {
+        let mut sa: libc::sigaction = std::mem::zeroed();
+        sa.sa_sigaction = libc::SIG_DFL;
+        libc::sigemptyset(&mut sa.sa_mask);
+        libc::sigaction(sig, &sa, std::ptr::null_mut());
+        libc::raise(sig);
+    }
 }
 
 /// `error: object `X` (BIN) crashed with SIGFPE: <kind> in entry E (selector S)`.
