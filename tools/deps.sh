@@ -2,8 +2,8 @@
 # Installs the host packages cargo-openr needs on Debian/Ubuntu (idempotent, quiet when
 # everything is already there). Used by the README commands and by CI:
 #   * the build: g++ gcc make binutils gzip, python3 (tests and the robot protocol peers),
-#     clangd (the compile database is checked with it), gdb (the test that debugs a
-#     repaired header);
+#     clangd (the compile database is checked with it), gdb and valgrind (`run --gdb`,
+#     `run --valgrind` and the tests that debug a repaired header or check memcheck);
 #   * the MuJoCo simulator (`cargo openr run --sim mujoco`): Mesa's headless GL (EGL and
 #     OSMesa) and mujoco==$MUJOCO_VERSION from PyPI in a venv at $MUJOCO_VENV
 #     (default ~/.cache/cargo-openr/mujoco-venv, where cargo-openr looks for it).
@@ -12,7 +12,7 @@ MUJOCO_VERSION=4.0.0  # keep in step with cargo-openr/src/ops/sim.rs MUJOCO_VERS
 VENV=${MUJOCO_VENV:-${XDG_CACHE_HOME:-$HOME/.cache}/cargo-openr/mujoco-venv}
 
 need=()
-for pkg_cmd in g++:g++ gcc:gcc make:make binutils:ar gzip:gzip python3:python3 clangd:clangd gdb:gdb; do
+for pkg_cmd in g++:g++ gcc:gcc make:make binutils:ar gzip:gzip python3:python3 clangd:clangd gdb:gdb valgrind:valgrind; do
   pkg=${pkg_cmd%%:*}; cmd=${pkg_cmd##*:}
   command -v "$cmd" >/dev/null 2>&1 || need+=("$pkg")
 done
