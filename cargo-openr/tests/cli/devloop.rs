@@ -207,3 +207,17 @@ fn c_units_are_compiled_as_c() {
     assert!(ok, "{syms}");
     assert!(syms.lines().any(|l| l.ends_with(" T SumRow")), "C linkage, not a mangled name: {syms}");
 }
+
+#[test]
+fn stubgen_warnings_reach_the_build_output() {
+    // dup-subname's stub.cfg uses the SubName Stdin twice, which stubgen2 warns about.
+    // (Its sources need the Makefile's def.h patch, which `cargo openr build` does not
+    // run: the build fails after the warning, as the warning says it may.)
+    let (_tmp, dir) = program("dup-subname");
+    let build = || cargo_openr_in(&dir, &["build", "--sdk", sdk_root().to_str().unwrap()], &[]);
+    let out = build();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("stubgen2: ") && err.contains("stub.cfg:14: warning: SubName 'Stdin'"), "{err}");
+    let again = build();
+    assert!(!String::from_utf8_lossy(&again.stderr).contains("stubgen2: "), "only when the stub is regenerated: {}", text(&again));
+}

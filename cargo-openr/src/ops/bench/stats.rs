@@ -119,7 +119,9 @@ pub fn markdown(table: &Table) -> String {
             Some((r, rs)) if rs.median != 0.0 => (format!("{}: {} {}", r.name, fmt(rs.median), r.unit), format!("{:.2}×", sp.median / rs.median)),
             _ => (String::new(), String::new()),
         };
-        s.push_str(&format!("| {} | {} | {} | {} | {} | {} | {} |\n", f.name, fmt(sp.min), fmt(sp.median), fmt(sp.max), f.unit, rname, ratio));
+        // A `|` inside a cell (|Δt − 32 ms|) would end the cell.
+        let cell = |t: &str| t.replace('|', "\\|");
+        s.push_str(&format!("| {} | {} | {} | {} | {} | {} | {} |\n", cell(&f.name), fmt(sp.min), fmt(sp.median), fmt(sp.max), f.unit, cell(&rname), ratio));
     }
     s
 }
@@ -183,6 +185,9 @@ mod tests {
         let md = markdown(&tab);
         assert!(md.contains("| rtt | 10.0 | 12.0 | 14.0 | µs | raw: 5.00 µs | 2.40× |"), "{md}");
         assert!(md.contains("| raw | 4.00 | 5.00 | 6.00 | µs |  |  |"), "{md}");
+        let mut tab = Table::default();
+        tab.push("jitter |Δt − 32 ms| p50", 1.0, "µs", None);
+        assert!(markdown(&tab).contains("| jitter \\|Δt − 32 ms\\| p50 | 1.00 |"), "{}", markdown(&tab));
     }
 
     #[test]

@@ -36,6 +36,8 @@ pub(super) struct Plan<'a> {
     stale_units: Vec<Unit>,
     /// Any compiler or linker work at all (the stub, a unit, the link).
     pub work: bool,
+    /// What stubgen2 warned about when it regenerated the stub (a SubName used twice …).
+    stub_warnings: Vec<String>,
 }
 
 fn is_network(sources: &[PathBuf], dir: &Path) -> bool {
@@ -105,10 +107,12 @@ pub(super) fn plan<'a>(opts: &BuildOptions, project: &Path, o: &'a Object, comma
     }
 
     let mut work = false;
+    let mut stub_warnings = Vec::new();
     if stale(&stub_cc, std::slice::from_ref(&stub_cfg)) {
         work = true;
         let cfg = stubgen::parse_files(std::slice::from_ref(&stub_cfg)).map_err(|e| anyhow::anyhow!("{e}"))?;
         stubgen::write_outputs(&cfg, &out).map_err(|e| anyhow::anyhow!("{e}"))?;
+        stub_warnings = stubgen::warnings(&cfg).iter().map(|w| format!("stubgen2: {w}\n")).collect();
     }
 
     let mut all = vec![stub_cc];
@@ -138,7 +142,7 @@ pub(super) fn plan<'a>(opts: &BuildOptions, project: &Path, o: &'a Object, comma
     work |= !stale_units.is_empty()
         || stale(&bin, &link_inputs)
         || fs::read_to_string(link_stamp(&out)).ok().as_deref() != Some(link_line(opts).as_str());
-    Ok(Plan { object: o, out, ocf, objs, stale_units, work })
+    Ok(Plan { object: o, out, ocf, objs, stale_units, work, stub_warnings })
 }
 
 /// Runs `task(i)` for i in 0..n on up to `jobs` threads; returns the results in index order.
@@ -223,6 +227,9 @@ fn link(opts: &BuildOptions, p: &Plan, objs_dir: &Path) -> Result<(bool, PathBuf
 pub(super) fn build_all(opts: &BuildOptions, plans: &[Plan], objs_dir: &Path, emit: &mut dyn FnMut(Event)) -> anyhow::Result<usize> {
     for p in plans.iter().filter(|p| p.work) {
         emit(Event::Compiling { object: p.object.name.clone(), kind: Kind::Cxx });
+        for w in &p.stub_warnings {
+            emit(Event::Message { object: p.object.name.clone(), level: "warning", rendered: w.clone() });
+        }
     }
     let units: Vec<(&Plan, &Unit)> = plans.iter().flat_map(|p| p.stale_units.iter().map(move |u| (p, u))).collect();
     if opts.verbose {
