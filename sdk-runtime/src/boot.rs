@@ -190,6 +190,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     // No frame after the end; at `--speed max` the shutdown takes its turn where the
     // frame thread stopped (sched.rs), so it begins at the same message every run.
     rt.clock.freeze();
+    rt.vr.peers.stop_lockstep();
     rt.sched.take_over(Duration::from_secs(2));
     rt.sched.release();
     crate::lifecycle::shutdown(rt, &booted, opts.watchdog, &mut failures);

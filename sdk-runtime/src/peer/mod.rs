@@ -137,6 +137,8 @@ struct State {
     last_frame: u32,
     time_ms: u64,
     closed: bool,
+    /// The run is ending: the frame thread no longer waits for the clock owner.
+    ending: bool,
 }
 
 /// Peers attached to the robot.
@@ -237,7 +239,7 @@ impl Hub {
         }
         let mut st = self.lock();
         if let Some(o) = owner {
-            while st.lockstep.is_none() && st.clock == Some(o) && !st.closed {
+            while st.lockstep.is_none() && st.clock == Some(o) && !st.closed && !st.ending {
                 st = self.cv.wait(st).unwrap_or_else(|p| p.into_inner());
             }
         }
@@ -275,6 +277,14 @@ impl Hub {
         drop(st);
         self.cv.notify_all();
         rt.diag.info(&format!("robot peer `{}` detached after frame {frame} ({why}); the built-in robot takes over", p.name));
+    }
+
+    /// The run is ending (shutdown, signal): a frame waiting for a clock owner that
+    /// never answers completes without its READINGS, so the frame thread gives up its
+    /// turn and the Stop/Destroy sequence can run.
+    pub fn stop_lockstep(&self) {
+        self.lock().ending = true;
+        self.cv.notify_all();
     }
 
     /// End of the run: BYE to every peer, connections closed.
