@@ -5,72 +5,12 @@
 //! (`OPENR/ObjcommMessages.h`, `OPENR/OPENRMessages.h`), so a drift fails the build.
 #![allow(non_camel_case_types)]
 
-use std::ffi::{c_char, c_int, c_longlong, c_uchar, c_uint, c_ulonglong, c_ushort, c_void};
+use std::ffi::c_void;
 use std::mem::{offset_of, size_of};
 
-/// `OPENR_HOST_ABI_VERSION`.
-pub const HOST_ABI_VERSION: c_uint = 1;
-
-/// `struct openr_power_state` (only its size matters here).
-#[repr(C)]
-pub struct openr_power_state {
-    pub fields: [c_uint; 9],
-}
-
-/// `struct openr_host_api`, the whole table in header order (`size` of the runtime's
-/// table must be at least ours).
-#[repr(C)]
-pub struct openr_host_api {
-    pub abi_version: c_uint,
-    pub size: c_uint,
-    pub map_path: unsafe extern "C" fn(*const c_char, c_int, *mut c_char, usize) -> c_int,
-    pub object_exit: unsafe extern "C" fn(c_int),
-    pub self_oid: unsafe extern "C" fn() -> *mut c_void,
-    pub self_name: unsafe extern "C" fn() -> *const c_char,
-    pub send: unsafe extern "C" fn(*mut c_void, c_uint, *const c_void, usize) -> c_int,
-    pub call: unsafe extern "C" fn(*mut c_void, c_uint, *const c_void, usize, *mut c_void, usize, *mut usize, c_uint) -> c_int,
-    pub reply: unsafe extern "C" fn(*const c_void, usize) -> c_int,
-    pub register_service: unsafe extern "C" fn(*const c_char, *mut c_void, c_uint) -> c_int,
-    pub unregister_services: unsafe extern "C" fn(),
-    pub console_write: unsafe extern "C" fn(*const c_char, usize),
-    pub shm_alloc: unsafe extern "C" fn(usize, *mut c_uint) -> *mut c_void,
-    pub shm_base: unsafe extern "C" fn(c_uint, *mut usize) -> *mut c_void,
-    pub shm_ref: unsafe extern "C" fn(c_uint),
-    pub shm_unref: unsafe extern "C" fn(c_uint),
-    pub system_time: unsafe extern "C" fn(*mut c_uint, *mut c_uint),
-    pub get_clock: unsafe extern "C" fn(*mut c_longlong, *mut c_int),
-    pub set_clock: unsafe extern "C" fn(c_longlong, c_int),
-    pub sleep_ns: unsafe extern "C" fn(c_ulonglong),
-    pub robot_design: unsafe extern "C" fn() -> *const c_char,
-    pub find_design_data: unsafe extern "C" fn(*const c_char, *mut c_uint, *mut *mut c_void, *mut usize) -> c_uint,
-    pub delete_design_data: unsafe extern "C" fn(c_uint) -> c_uint,
-    pub set_timer: unsafe extern "C" fn(*mut c_void, c_uint, *const c_void, usize, c_uint, c_uint) -> c_uint,
-    pub cancel_timer: unsafe extern "C" fn(c_uint) -> c_int,
-    pub power_status: unsafe extern "C" fn(*mut openr_power_state),
-    pub observe_power: unsafe extern "C" fn(*mut c_void, c_uint, *const openr_power_state) -> c_uint,
-    pub set_motor_power: unsafe extern "C" fn(c_int),
-    pub shutdown: unsafe extern "C" fn(),
-    pub open_primitive: unsafe extern "C" fn(*const c_char, *mut c_uint) -> c_uint,
-    pub close_primitive: unsafe extern "C" fn(c_uint) -> c_uint,
-    pub control_primitive: unsafe extern "C" fn(c_uint, c_uint, *const c_void, usize, *mut c_void, usize) -> c_uint,
-    pub joint_gain: unsafe extern "C" fn(c_int, c_uint, *mut c_ushort) -> c_uint,
-    pub joint_value: unsafe extern "C" fn(c_uint, *mut c_void) -> c_uint,
-    pub sensor_value: unsafe extern "C" fn(c_uint, *mut c_void) -> c_uint,
-    pub sync_key: unsafe extern "C" fn(c_int, c_uint, *mut c_uint, *mut c_uint) -> c_uint,
-    pub new_vector: unsafe extern "C" fn(c_int, usize, usize, *mut c_uint, *mut *mut c_void) -> c_uint,
-    pub delete_vector: unsafe extern "C" fn(c_uint) -> c_uint,
-    pub set_cdt: unsafe extern "C" fn(c_uint) -> c_uint,
-    pub volume_switch: unsafe extern "C" fn(c_int, *mut c_uchar) -> c_uint,
-    pub vr_attach: unsafe extern "C" fn(c_int, c_uint) -> c_uint,
-    pub vr_submit: unsafe extern "C" fn(c_int, *mut c_void, c_uint, *mut c_void, usize, *mut c_ulonglong) -> c_uint,
-}
-
-/// `OPENR_GAIN_*` ops of `joint_gain`.
-pub const GAIN_ENABLE: c_int = 0;
-pub const GAIN_DISABLE: c_int = 1;
-pub const GAIN_SET: c_int = 2;
-/// `OPENR_VECTOR_COMMAND` kind of `new_vector`.
-pub const VECTOR_COMMAND: c_int = 0;
+/// The host table and its constants, declared once in `openr-sys` (checked there
+/// against `openr_host.h`).
+pub use openr_sys::{openr_host_api, openr_power_state, GAIN_DISABLE, GAIN_ENABLE, GAIN_SET, HOST_ABI_VERSION, VECTOR_COMMAND};
 
 /// `OMessageType` values (`OPENRMessages.h`, `ObjcommMessages.h`).
 pub const OMSG_OSTATUS: u32 = 2;
@@ -245,10 +185,6 @@ const _: () = {
     assert!(offset_of!(ONotifyMessage, subject_id) == 8);
     assert!(offset_of!(ONotifyMessage, num_of_data) == 24 && offset_of!(ONotifyMessage, data) == 32);
     assert!(size_of::<EntryRow>() == 16);
-    // 2 ints, 40 function pointers (openr_host.h)
-    assert!(size_of::<openr_host_api>() == 8 + 40 * 8);
-    assert!(offset_of!(openr_host_api, system_time) == 8 + 14 * 8);
-    assert!(offset_of!(openr_host_api, vr_submit) == 8 + 39 * 8);
 };
 
 /// Reads a message struct from an entry's argument.

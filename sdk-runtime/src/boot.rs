@@ -138,7 +138,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         registry: Mutex::new(Vec::new()),
         shm: ShmTable::new(),
         design_data: Mutex::new(Vec::new()),
-        power: Power::new(PowerState::initial(clock.calendar().1)),
+        power: Power::new(crate::power::initial_state(clock.calendar().1)),
         clock,
         diag: opts.diag,
         shutdown_requested: AtomicBool::new(false),
@@ -194,6 +194,10 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     rt.sched.take_over(Duration::from_secs(2));
     rt.sched.release();
     crate::lifecycle::shutdown(rt, &booted, opts.watchdog, &mut failures);
+    let internal = crate::host_api::INTERNAL_ERRORS.load(std::sync::atomic::Ordering::Acquire);
+    if internal > 0 {
+        failures.0.push(format!("{internal} call(s) into the runtime panicked (a bug of cargo-openr, said above)"));
+    }
     rt.vr.flush_trace();
     rt.vr.peers.close_all(&format!("the run ended ({ended:?})"));
     // stdout only: fflush(NULL) would wait for stdin's lock, held by a blocked reader.

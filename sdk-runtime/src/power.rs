@@ -2,20 +2,8 @@
 //! observation, "every change" / "not notify" / target values for the scalar fields.
 use std::sync::Mutex;
 
-/// Mirror of `struct openr_power_state` (openr_host.h).
-#[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct PowerState {
-    pub robot_status: u32,
-    pub battery_status: u32,
-    pub remaining_capacity: u32,
-    pub temperature: u32,
-    pub fully_charged_capacity: u32,
-    pub voltage: u32,
-    pub current: i32,
-    pub time_dif: i32,
-    pub volume: u32,
-}
+/// `struct openr_power_state` (openr-sys).
+pub use openr_sys::openr_power_state as PowerState;
 
 pub const ORSB_MOTOR_POWER: u32 = 0x0000_0002;
 pub const ORSB_PAUSE: u32 = 0x0000_0001;
@@ -25,20 +13,18 @@ pub const ORSB_OPEN_R_POWER_GOOD: u32 = 0x0000_8000;
 const OBSB_DISCHARGING: u32 = 0x0040;
 const OBSB_INITIALIZED: u32 = 0x0080;
 
-impl PowerState {
-    /// A freshly charged ERS-7 battery, discharging (robot-api 9.2 emulator defaults).
-    pub fn initial(time_dif: i32) -> PowerState {
-        PowerState {
-            robot_status: ORSB_BATTERY_CONNECTED | ORSB_OPEN_R_POWER_GOOD,
-            battery_status: OBSB_INITIALIZED | OBSB_DISCHARGING,
-            remaining_capacity: 100,
-            temperature: 3031,
-            fully_charged_capacity: 2000,
-            voltage: 8000,
-            current: -1000,
-            time_dif,
-            volume: 3,
-        }
+/// A freshly charged ERS-7 battery, discharging (robot-api 9.2 emulator defaults).
+pub fn initial_state(time_dif: i32) -> PowerState {
+    PowerState {
+        robot_status: ORSB_BATTERY_CONNECTED | ORSB_OPEN_R_POWER_GOOD,
+        battery_status: OBSB_INITIALIZED | OBSB_DISCHARGING,
+        remaining_capacity: 100,
+        temperature: 3031,
+        fully_charged_capacity: 2000,
+        voltage: 8000,
+        current: -1000,
+        time_dif,
+        volume: 3,
     }
 }
 
@@ -118,7 +104,7 @@ mod tests {
     #[test]
     fn bits_notify_on_both_edges() {
         let o = observer(PowerState { robot_status: ORSB_MOTOR_POWER, remaining_capacity: 0xFFFE, temperature: 0xFFFE, time_dif: 0x7E, volume: 0xFE, ..Default::default() });
-        let a = PowerState::initial(0);
+        let a = initial_state(0);
         let mut b = a;
         b.robot_status |= ORSB_MOTOR_POWER;
         assert!(o.wants(&a, &b) && o.wants(&b, &a));
@@ -131,7 +117,7 @@ mod tests {
     #[test]
     fn scalar_targets_fire_once_on_arrival() {
         let o = observer(PowerState { remaining_capacity: 20, temperature: 0xFFFF, time_dif: 0x7E, volume: 0xFE, ..Default::default() });
-        let a = PowerState::initial(0);
+        let a = initial_state(0);
         let mut b = a;
         b.remaining_capacity = 21;
         assert!(!o.wants(&a, &b));

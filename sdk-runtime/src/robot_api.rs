@@ -3,6 +3,7 @@
 //! Each returns an OStatus value, as the OPENR:: function that forwards it.
 #![deny(unsafe_op_in_unsafe_fn)]
 
+use openr_sys as sys;
 use std::ffi::{c_char, c_void, CStr};
 
 use crate::robot::status::*;
@@ -15,7 +16,7 @@ fn with_robot<T>(f: impl FnOnce(&mut VirtualRobot) -> T) -> Option<T> {
     Runtime::get().map(|rt| f(&mut rt.vr.robot()))
 }
 
-pub unsafe extern "C" fn open_primitive(locator: *const c_char, id: *mut u32) -> u32 {
+pub unsafe fn open_primitive(locator: *const c_char, id: *mut u32) -> u32 {
     if locator.is_null() || id.is_null() {
         return O_INVALID_ARG;
     }
@@ -32,14 +33,14 @@ pub unsafe extern "C" fn open_primitive(locator: *const c_char, id: *mut u32) ->
     }
 }
 
-pub extern "C" fn close_primitive(id: u32) -> u32 {
+pub fn close_primitive(id: u32) -> u32 {
     with_robot(|r| r.close_primitive(id)).unwrap_or(O_FAIL)
 }
 
 /// Device requests (robot-api 5). The camera's white balance, gain and shutter change
 /// the rendered image; the speaker and mic requests are accepted (the emulated
 /// amplifier has no volume or mute of its own).
-pub unsafe extern "C" fn control_primitive(id: u32, req: u32, p: *const c_void, ps: usize, _r: *mut c_void, _rs: usize) -> u32 {
+pub unsafe fn control_primitive(id: u32, req: u32, p: *const c_void, ps: usize, _r: *mut c_void, _rs: usize) -> u32 {
     with_robot(|r| {
         if r.model().primitive(id).is_none() {
             return O_INVALID_PRIMITIVE_ID;
@@ -57,7 +58,7 @@ pub unsafe extern "C" fn control_primitive(id: u32, req: u32, p: *const c_void, 
     .unwrap_or(O_FAIL)
 }
 
-pub unsafe extern "C" fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
+pub unsafe fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
     let read = |g: *mut u16| -> Option<Gain> {
         if g.is_null() {
             return None;
@@ -74,16 +75,16 @@ pub unsafe extern "C" fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
         }
     };
     with_robot(|r| match op {
-        0 => r.enable_joint_gain(id),
-        1 => r.disable_joint_gain(id),
-        2 => read(gains).map_or(O_INVALID_ARG, |g| r.set_joint_gain(id, g)),
-        3 => read(gains).map_or(O_INVALID_ARG, |g| r.register_default_joint_gain(id, g)),
-        4 => r.set_default_joint_gain(id),
-        5 => r.get_joint_gain(id).map_or_else(|e| e, |g| {
+        sys::GAIN_ENABLE => r.enable_joint_gain(id),
+        sys::GAIN_DISABLE => r.disable_joint_gain(id),
+        sys::GAIN_SET => read(gains).map_or(O_INVALID_ARG, |g| r.set_joint_gain(id, g)),
+        sys::GAIN_REGISTER_DEFAULT => read(gains).map_or(O_INVALID_ARG, |g| r.register_default_joint_gain(id, g)),
+        sys::GAIN_SET_DEFAULT => r.set_default_joint_gain(id),
+        sys::GAIN_GET => r.get_joint_gain(id).map_or_else(|e| e, |g| {
             write(gains, g);
             O_SUCCESS
         }),
-        6 => r.get_default_joint_gain(id).map_or_else(|e| e, |g| {
+        sys::GAIN_GET_DEFAULT => r.get_default_joint_gain(id).map_or_else(|e| e, |g| {
             write(gains, g);
             O_SUCCESS
         }),
@@ -97,7 +98,7 @@ unsafe fn put16(out: *mut c_void, bytes: [u8; 16]) {
     unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.cast::<u8>(), 16) };
 }
 
-pub unsafe extern "C" fn joint_value(id: u32, out: *mut c_void) -> u32 {
+pub unsafe fn joint_value(id: u32, out: *mut c_void) -> u32 {
     if out.is_null() {
         return O_INVALID_ARG;
     }
@@ -112,7 +113,7 @@ pub unsafe extern "C" fn joint_value(id: u32, out: *mut c_void) -> u32 {
     }
 }
 
-pub unsafe extern "C" fn sensor_value(id: u32, out: *mut c_void) -> u32 {
+pub unsafe fn sensor_value(id: u32, out: *mut c_void) -> u32 {
     if out.is_null() {
         return O_INVALID_ARG;
     }
@@ -127,7 +128,7 @@ pub unsafe extern "C" fn sensor_value(id: u32, out: *mut c_void) -> u32 {
     }
 }
 
-pub unsafe extern "C" fn sync_key(op: i32, key: u32, k1: *mut u32, k2: *mut u32) -> u32 {
+pub unsafe fn sync_key(op: i32, key: u32, k1: *mut u32, k2: *mut u32) -> u32 {
     let put = |p: *mut u32, v: u32| {
         if !p.is_null() {
             // SAFETY: out-param.
@@ -135,12 +136,12 @@ pub unsafe extern "C" fn sync_key(op: i32, key: u32, k1: *mut u32, k2: *mut u32)
         }
     };
     with_robot(|r| match op {
-        0 => r.new_sync_key().map_or_else(|e| e, |k| {
+        sys::SYNC_NEW => r.new_sync_key().map_or_else(|e| e, |k| {
             put(k1, k);
             O_SUCCESS
         }),
-        1 => r.cancel_sync_key(key),
-        2 => r.divide_sync_key(key).map_or_else(|e| e, |(a, b)| {
+        sys::SYNC_CANCEL => r.cancel_sync_key(key),
+        sys::SYNC_DIVIDE => r.divide_sync_key(key).map_or_else(|e| e, |(a, b)| {
             put(k1, a);
             put(k2, b);
             O_SUCCESS
@@ -170,7 +171,7 @@ fn cdt_vector_init(buf: &mut [u8]) {
     }
 }
 
-pub unsafe extern "C" fn new_vector(kind: i32, n: usize, data_size: usize, mem_id: *mut u32, base: *mut *mut c_void) -> u32 {
+pub unsafe fn new_vector(kind: i32, n: usize, data_size: usize, mem_id: *mut u32, base: *mut *mut c_void) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
     if mem_id.is_null() || base.is_null() || n == 0 || n > 4096 || data_size > 1 << 24 {
         return O_INVALID_ARG;
@@ -178,11 +179,11 @@ pub unsafe extern "C" fn new_vector(kind: i32, n: usize, data_size: usize, mem_i
     let design = rt.design.to_string_lossy().into_owned();
     let image = rt.vr.robot().image_layout();
     let size = match kind {
-        0 => vectors::command_vector_size(n),
-        1 => vectors::sound_vector_size(n, data_size),
-        2 => 192 + 144 * 8,
-        3 => vectors::sensor_vector_size(n),
-        4 => image.size(),
+        sys::VECTOR_COMMAND => vectors::command_vector_size(n),
+        sys::VECTOR_SOUND => vectors::sound_vector_size(n, data_size),
+        sys::VECTOR_CDT => 192 + 144 * 8,
+        sys::VECTOR_SENSOR => vectors::sensor_vector_size(n),
+        sys::VECTOR_IMAGE => image.size(),
         _ => return O_INVALID_ARG,
     };
     let total = vectors::region_size(size);
@@ -190,13 +191,13 @@ pub unsafe extern "C" fn new_vector(kind: i32, n: usize, data_size: usize, mem_i
     // SAFETY: a fresh zeroed region of `total` bytes.
     let buf = unsafe { std::slice::from_raw_parts_mut(p, total) };
     let init = match kind {
-        0 => vectors::command_vector_init(buf, n).is_ok(),
-        1 => vectors::sound_vector_init(buf, n, data_size, &design).is_ok(),
-        2 => {
+        sys::VECTOR_COMMAND => vectors::command_vector_init(buf, n).is_ok(),
+        sys::VECTOR_SOUND => vectors::sound_vector_init(buf, n, data_size, &design).is_ok(),
+        sys::VECTOR_CDT => {
             cdt_vector_init(buf);
             true
         }
-        3 => vectors::sensor_vector_init(buf, n).is_ok(),
+        sys::VECTOR_SENSOR => vectors::sensor_vector_init(buf, n).is_ok(),
         _ => image.write_header(buf, u32::MAX, u32::MAX).is_ok(),
     };
     if !init || vectors::set_region_fields(buf, id, 0, total as u32).is_err() {
@@ -212,7 +213,7 @@ pub unsafe extern "C" fn new_vector(kind: i32, n: usize, data_size: usize, mem_i
     O_SUCCESS
 }
 
-pub extern "C" fn delete_vector(mem_id: u32) -> u32 {
+pub fn delete_vector(mem_id: u32) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
     let mut v = rt.vectors.lock().unwrap_or_else(|p| p.into_inner());
     match v.iter().position(|i| *i == mem_id) {
@@ -227,7 +228,7 @@ pub extern "C" fn delete_vector(mem_id: u32) -> u32 {
 
 /// `SetCdtVectorData`: the camera detects colours with these tables from the next
 /// image on (robot-api 6.7).
-pub extern "C" fn set_cdt(mem_id: u32) -> u32 {
+pub fn set_cdt(mem_id: u32) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
     match rt.shm.base(mem_id) {
         Some((p, n)) => {
@@ -239,7 +240,7 @@ pub extern "C" fn set_cdt(mem_id: u32) -> u32 {
     }
 }
 
-pub unsafe extern "C" fn volume_switch(set: i32, value: *mut u8) -> u32 {
+pub unsafe fn volume_switch(set: i32, value: *mut u8) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
     if value.is_null() {
         return O_INVALID_ARG;
@@ -258,7 +259,7 @@ pub unsafe extern "C" fn volume_switch(set: i32, value: *mut u8) -> u32 {
     O_SUCCESS
 }
 
-pub extern "C" fn vr_attach(service: i32, selector: u32) -> u32 {
+pub fn vr_attach(service: i32, selector: u32) -> u32 {
     let (Some(rt), Some(me)) = (Runtime::get(), crate::object::current()) else { return O_FAIL };
     if rt.vr.attach(service as usize, me.oid, selector) {
         O_SUCCESS
@@ -267,7 +268,7 @@ pub extern "C" fn vr_attach(service: i32, selector: u32) -> u32 {
     }
 }
 
-pub unsafe extern "C" fn vr_submit(service: i32, oid: *mut c_void, selector: u32, base: *mut c_void, size: usize, token: *mut u64) -> u32 {
+pub unsafe fn vr_submit(service: i32, oid: *mut c_void, selector: u32, base: *mut c_void, size: usize, token: *mut u64) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
     if base.is_null() || token.is_null() {
         return O_INVALID_ARG;

@@ -18,30 +18,16 @@ use crate::clock::{Speed, FRAME};
 use crate::robot::{self, vectors, VirtualRobot};
 use crate::runtime::Runtime;
 
-pub const SERVICE_EFFECTOR: usize = 0;
-pub const SERVICE_SENSOR: usize = 1;
-pub const SERVICE_IMAGE: usize = 2;
-pub const SERVICE_SPEAKER: usize = 3;
-pub const SERVICE_MIC: usize = 4;
-const EVENT_DONE: u32 = 1;
-const EVENT_DATA: u32 = 2;
-const EVENT_CONNECTED: u32 = 3;
+pub const SERVICE_EFFECTOR: usize = openr_sys::VR_EFFECTOR as usize;
+pub const SERVICE_SENSOR: usize = openr_sys::VR_SENSOR as usize;
+pub const SERVICE_IMAGE: usize = openr_sys::VR_IMAGE as usize;
+pub const SERVICE_SPEAKER: usize = openr_sys::VR_SPEAKER as usize;
+pub const SERVICE_MIC: usize = openr_sys::VR_MIC as usize;
+use openr_sys::{openr_vr_event as VrEvent, VR_CONNECTED as EVENT_CONNECTED, VR_DATA as EVENT_DATA, VR_DONE as EVENT_DONE};
 
-/// `struct openr_vr_event` (openr_host.h).
-#[repr(C)]
-struct VrEvent {
-    kind: u32,
-    service: u32,
-    token: u64,
-    mem_id: u32,
-    size: u32,
-}
-
-impl VrEvent {
-    fn bytes(&self) -> Vec<u8> {
-        // SAFETY: a repr(C) struct of plain integers.
-        unsafe { std::slice::from_raw_parts((self as *const VrEvent).cast::<u8>(), std::mem::size_of::<VrEvent>()) }.to_vec()
-    }
+fn event_bytes(ev: &VrEvent) -> Vec<u8> {
+    // SAFETY: a repr(C) struct of plain integers without padding (16 + 8 bytes).
+    unsafe { std::slice::from_raw_parts((ev as *const VrEvent).cast::<u8>(), std::mem::size_of::<VrEvent>()) }.to_vec()
 }
 
 #[derive(Default)]
@@ -124,7 +110,7 @@ impl VrService {
         let Some((oid, sel)) = provider else { return false };
         let ev = VrEvent { kind: EVENT_CONNECTED, service: 0, token: 0, mem_id: 0, size: 0 };
         rt.sched.boot_turn();
-        rt.call_with(oid, sel, ev.bytes(), Some(timeout), || rt.sched.release()).is_ok()
+        rt.call_with(oid, sel, event_bytes(&ev), Some(timeout), || rt.sched.release()).is_ok()
     }
 
     /// A command vector received by the effector from subject (oid, selector).
@@ -166,7 +152,7 @@ impl VrService {
             self.wiring().playing.remove(&c.token);
             if let Some((oid, sel)) = effector {
                 let ev = VrEvent { kind: EVENT_DONE, service: SERVICE_EFFECTOR as u32, token: c.token, mem_id: 0, size: 0 };
-                let _ = rt.send(oid, sel, ev.bytes());
+                let _ = rt.send(oid, sel, event_bytes(&ev));
             }
         }
         if let Some(vector) = out.sensor_vector {
@@ -183,7 +169,7 @@ impl VrService {
         if let Some((oid, sel)) = self.wiring().providers[SERVICE_SPEAKER] {
             for token in played.done {
                 let ev = VrEvent { kind: EVENT_DONE, service: SERVICE_SPEAKER as u32, token, mem_id: 0, size: 0 };
-                let _ = rt.send(oid, sel, ev.bytes());
+                let _ = rt.send(oid, sel, event_bytes(&ev));
             }
         }
         if out.mic_due && self.wiring().providers[SERVICE_MIC].is_some() {
@@ -223,7 +209,7 @@ impl VrService {
         fill(region);
         let _ = vectors::set_region_fields(region, mem_id, 0, len as u32);
         let ev = VrEvent { kind: EVENT_DATA, service: service as u32, token: 0, mem_id, size: len as u32 };
-        if rt.send(oid, sel, ev.bytes()).is_err() {
+        if rt.send(oid, sel, event_bytes(&ev)).is_err() {
             rt.shm.unref(mem_id);
         }
         true

@@ -65,3 +65,20 @@ fn a_panicking_rust_object_fails_the_run_naming_it() {
     // The crash report names the object (its ocf name) and what it was running.
     assert!(out.stderr.contains("object `panicDogSubject` (/MS/OPEN-R/MW/OBJS/PANICDOS.BIN) crashed with SIGABRT"), "the object is named:\n{}\n{}", out.stdout, out.stderr);
 }
+
+#[test]
+fn a_panic_inside_the_runtime_stops_at_the_call_and_fails_the_run() {
+    // MicRate calls OPENR::GetRobotDesign in DoInit; the hook makes the runtime's side panic.
+    let b = build("micrate");
+    let run = spawn_ms(&b.ms(), &["--speed", "max", "--for", "1s"], &[("OPENR_INJECT_PANIC", "robot_design")]);
+    let out = run.wait(Duration::from_secs(120));
+    assert!(
+        out.stderr.contains("error: internal error in cargo-openr: the runtime's `robot_design` (called by object `micRate`) panicked: injected"),
+        "{}",
+        out.stderr
+    );
+    // the call returned its failure value and the program went on to its end
+    assert!(out.stderr.contains("time limit reached"), "{}", out.stderr);
+    assert!(out.stderr.contains("1 call(s) into the runtime panicked"), "{}", out.stderr);
+    assert!(out.code.is_some_and(|c| c != 0), "exit {:?}\n{}", out.code, out.stderr);
+}

@@ -25,102 +25,12 @@ use std::sync::{Mutex, OnceLock};
 use config::NetConfig;
 use stack::State;
 
-pub const ABI_VERSION: u32 = 1;
+pub const ABI_VERSION: u32 = openr_sys::NET_ABI_VERSION;
 
-/// Mirror of `struct openr_net_request`.
-#[repr(C)]
-#[derive(Clone, Copy)]
-pub struct Request {
-    pub proto: i32,
-    pub op: i32,
-    pub endpoint: u32,
-    pub addr: u32,
-    pub port: u32,
-    pub laddr: u32,
-    pub lport: u32,
-    pub buffer: *mut u8,
-    pub size: i32,
-    pub size_min: i32,
-    pub flags: i32,
-    pub linger_time: i32,
-    pub value: i32,
-    pub value2: i32,
-    pub region: u32,
-    pub region_base: *mut c_void,
-    pub addr_list: [u32; 3],
-    pub name: [u8; 101],
-    pub str_: [u8; 101],
-}
+/// `struct openr_net_request` / `openr_net_result` (openr-sys).
+pub use openr_sys::{openr_net_request as Request, openr_net_result as NetResult};
 
-/// Mirror of `struct openr_net_result`.
-#[repr(C)]
-#[derive(Clone, Copy)]
-pub struct NetResult {
-    pub proto: i32,
-    pub op: i32,
-    pub error: i32,
-    pub laddr: u32,
-    pub lport: u32,
-    pub faddr: u32,
-    pub fport: u32,
-    pub size: i32,
-    pub ready: i32,
-    pub module: *mut c_void,
-    pub endpoint: u32,
-    pub region: u32,
-    pub base: *mut c_void,
-    pub buf_size: u32,
-    pub name: [u8; 101],
-    pub name_valid: i32,
-    pub server_address: u32,
-    pub host_address: u32,
-    pub host_valid: i32,
-    pub n_address: i32,
-    pub n_alias: i32,
-    pub nscount: i32,
-    pub addr_list: [u32; 3],
-    pub param_type: i32,
-    pub i32_: i32,
-    pub str_: [u8; 33],
-}
-
-// Raw pointers inside are addresses in the one shared address space.
-unsafe impl Send for Request {}
-unsafe impl Send for NetResult {}
-
-impl NetResult {
-    pub fn new(req: &Request, error: i32) -> NetResult {
-        // SAFETY: all-zero is a valid value of this plain C struct.
-        let mut r: NetResult = unsafe { std::mem::zeroed() };
-        r.proto = req.proto;
-        r.op = req.op;
-        r.error = error;
-        r
-    }
-
-    pub fn set_name(&mut self, s: &str) {
-        let n = s.len().min(99);
-        self.name = [0; 101];
-        self.name[..n].copy_from_slice(&s.as_bytes()[..n]);
-        self.name_valid = 1;
-    }
-}
-
-impl Request {
-    pub fn name(&self) -> String {
-        cstr_field(&self.name)
-    }
-    pub fn str_value(&self) -> String {
-        cstr_field(&self.str_)
-    }
-}
-
-fn cstr_field(b: &[u8]) -> String {
-    let end = b.iter().position(|&c| c == 0).unwrap_or(b.len());
-    String::from_utf8_lossy(&b[..end]).into_owned()
-}
-
-pub type EncodeFn = unsafe extern "C" fn(*mut c_void, *const NetResult);
+pub use openr_sys::openr_net_encode_fn as EncodeFn;
 
 /// Where a completed operation's reply goes.
 pub enum Target {
@@ -223,40 +133,25 @@ impl Net {
     }
 }
 
-/// Mirror of `struct openr_net_api`.
-#[repr(C)]
-pub struct NetApi {
-    pub abi_version: u32,
-    pub size: u32,
-    endpoint_protocol: extern "C" fn(u32) -> i32,
-    submit: unsafe extern "C" fn(*const Request, *mut c_void, usize, EncodeFn, *mut c_void, u32, i32) -> i32,
-    config_value: unsafe extern "C" fn(*const c_char, *mut c_char, usize) -> i32,
-    robot_number: extern "C" fn() -> u32,
-}
+pub use openr_sys::openr_net_api as NetApi;
 
 /// The table libantMCOOP / libERA201D1 find with `dlsym(RTLD_DEFAULT,
 /// "openr_runtime_net_v1")`; exported by the `cargo-openr` binary (its build.rs).
+/// Declared once in `openr-sys`; entries call the functions below and stop panics.
 #[no_mangle]
 #[used]
-pub static openr_runtime_net_v1: NetApi = NetApi {
-    abi_version: ABI_VERSION,
-    size: std::mem::size_of::<NetApi>() as u32,
-    endpoint_protocol,
-    submit,
-    config_value,
-    robot_number,
-};
+pub static openr_runtime_net_v1: NetApi = openr_sys::net_table!(crate::net, crate::host_api::panicked);
 
 /// Keeps the table in the final link; call it from anything that always runs.
 pub fn init() -> *const NetApi {
     std::hint::black_box(&openr_runtime_net_v1)
 }
 
-extern "C" fn endpoint_protocol(endpoint: u32) -> i32 {
+pub(crate) fn endpoint_protocol(endpoint: u32) -> i32 {
     net().lock().protocol_of(endpoint)
 }
 
-unsafe extern "C" fn submit(req: *const Request, blob: *mut c_void, size: usize, encode: EncodeFn, oid: *mut c_void, selector: u32, sync: i32) -> i32 {
+pub(crate) unsafe fn submit(req: *const Request, blob: *mut c_void, size: usize, encode: EncodeFn, oid: *mut c_void, selector: u32, sync: i32) -> i32 {
     if req.is_null() || blob.is_null() {
         return -1;
     }
@@ -285,7 +180,7 @@ unsafe extern "C" fn submit(req: *const Request, blob: *mut c_void, size: usize,
     }
 }
 
-unsafe extern "C" fn config_value(key: *const c_char, out: *mut c_char, cap: usize) -> i32 {
+pub(crate) unsafe fn config_value(key: *const c_char, out: *mut c_char, cap: usize) -> i32 {
     if key.is_null() || out.is_null() || cap == 0 {
         return -1;
     }
@@ -301,6 +196,6 @@ unsafe extern "C" fn config_value(key: *const c_char, out: *mut c_char, cap: usi
     0
 }
 
-extern "C" fn robot_number() -> u32 {
+pub(crate) fn robot_number() -> u32 {
     net().config.offset
 }

@@ -1,0 +1,104 @@
+//! The C headers and this crate describe the same ABI: g++ compiles a program that
+//! prints every struct's size, every field's offset and every constant of
+//! `openr_host.h` / `openr_net.h`, and each must equal what Rust computes.
+use std::path::Path;
+use std::process::Command;
+
+fn headers() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../sdk-runtime/cxx")
+}
+
+/// `name value` lines, from g++ for the headers and from Rust for this crate.
+fn expected() -> Vec<String> {
+    let mut lines = Vec::new();
+    for (name, size, fields) in openr_sys::STRUCTS {
+        lines.push(format!("sizeof({name}) {size}"));
+        for (f, off) in *fields {
+            lines.push(format!("{name}.{f} {off}"));
+        }
+    }
+    for (name, value) in openr_sys::HOST_DEFINES.iter().chain(openr_sys::NET_DEFINES) {
+        lines.push(format!("{name} {value}"));
+    }
+    lines
+}
+
+fn probe_source() -> String {
+    let mut src = String::from("#include <cstdio>\n#include <cstddef>\n#include \"openr_host.h\"\n#include \"openr_net.h\"\nint main() {\n");
+    for (name, _, fields) in openr_sys::STRUCTS {
+        src += &format!("  std::printf(\"sizeof({name}) %zu\\n\", sizeof(struct {name}));\n");
+        for (f, _) in *fields {
+            src += &format!("  std::printf(\"{name}.{f} %zu\\n\", offsetof(struct {name}, {f}));\n");
+        }
+    }
+    for (name, _) in openr_sys::HOST_DEFINES.iter().chain(openr_sys::NET_DEFINES) {
+        src += &format!("  std::printf(\"{name} %lld\\n\", (long long)({name}));\n");
+    }
+    src + "  return 0;\n}\n"
+}
+
+#[test]
+fn the_c_headers_have_the_layout_and_constants_of_the_rust_declaration() {
+    let dir = tempfile_dir("layout");
+    let src = dir.join("probe.cc");
+    std::fs::write(&src, probe_source()).unwrap();
+    let exe = dir.join("probe");
+    let out = Command::new("g++").arg("-I").arg(headers()).arg(&src).arg("-o").arg(&exe).output().expect("g++ runs");
+    assert!(out.status.success(), "the headers do not compile:\n{}", String::from_utf8_lossy(&out.stderr));
+    let run = Command::new(&exe).output().unwrap();
+    let got: Vec<String> = String::from_utf8(run.stdout).unwrap().lines().map(str::to_string).collect();
+    let want = expected();
+    let diff: Vec<String> = want.iter().zip(&got).filter(|(w, g)| w != g).map(|(w, g)| format!("rust: {w}  |  g++: {g}")).collect();
+    assert!(diff.is_empty() && got.len() == want.len(), "the headers and openr-sys disagree:\n{}", diff.join("\n"));
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn the_tables_list_every_function_once_after_version_and_size() {
+    for (name, size, fields) in openr_sys::STRUCTS.iter().filter(|s| s.0.ends_with("_api")) {
+        assert_eq!(fields[0], ("abi_version", 0));
+        assert_eq!(fields[1], ("size", 4));
+        // one pointer per function after the two u32s, none skipped or repeated
+        for (i, (f, off)) in fields.iter().enumerate().skip(2) {
+            assert_eq!(*off, 8 * (i - 1), "{name}.{f}");
+        }
+        assert_eq!(*size, 8 * (fields.len() - 1), "{name}");
+    }
+}
+
+fn tempfile_dir(test: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("openr-sys-{test}-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// `openr_host()` (mcoopstub/host.cc) refuses a runtime table smaller than the one the
+/// object was built with, and says why.
+#[test]
+fn an_object_refuses_a_host_table_smaller_than_its_own() {
+    let dir = tempfile_dir("small-table");
+    let main = dir.join("main.cc");
+    std::fs::write(
+        &main,
+        "#include <cstdio>\n#include <cstring>\n#include \"openr_host.h\"\n\
+         extern \"C\" struct openr_host_api openr_runtime_api_v1;\n\
+         struct openr_host_api openr_runtime_api_v1;\n\
+         int main(int argc, char** argv) {\n\
+           openr_runtime_api_v1.abi_version = OPENR_HOST_ABI_VERSION;\n\
+           openr_runtime_api_v1.size = argc > 1 ? sizeof(struct openr_host_api) - 8 : sizeof(struct openr_host_api);\n\
+           std::printf(\"%s\\n\", openr_host() ? \"table\" : \"none\");\n  return 0;\n}\n",
+    )
+    .unwrap();
+    let exe = dir.join("probe");
+    let host_cc = headers().join("mcoopstub/host.cc");
+    let out = Command::new("g++").arg("-rdynamic").arg("-I").arg(headers()).arg(&main).arg(&host_cc).arg("-o").arg(&exe).arg("-ldl").output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let same = Command::new(&exe).output().unwrap();
+    assert_eq!(String::from_utf8_lossy(&same.stdout), "table\n");
+    assert!(same.stderr.is_empty());
+    let small = Command::new(&exe).arg("small").output().unwrap();
+    assert_eq!(String::from_utf8_lossy(&small.stdout), "none\n");
+    let err = String::from_utf8_lossy(&small.stderr);
+    assert!(err.contains("error: this object was built for host ABI 1") && err.contains("rebuild it with the runtime's SDK root"), "{err}");
+    let _ = std::fs::remove_dir_all(dir);
+}
