@@ -159,6 +159,8 @@ macro_rules! host_fns {
         // system objects only
         fn vr_attach(service: $crate::c_int, selector: $crate::c_uint) -> $crate::c_uint = $crate::O_FAIL;
         fn vr_submit(service: $crate::c_int, subject_oid: *mut $crate::c_void, subject_selector: $crate::c_uint, base: *mut $crate::c_void, size: usize, token: *mut $crate::c_ulonglong) -> $crate::c_uint = $crate::O_FAIL;
+        // later additions (appended: objects built before them keep working)
+        fn fatal(kind: $crate::c_uint) -> () = ();
     } };
 }
 

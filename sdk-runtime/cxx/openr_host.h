@@ -169,6 +169,11 @@ struct openr_host_api {
      * OPENR_VR_DONE for *token.  A malformed vector is refused (non-zero, no token). */
     unsigned int (*vr_submit)(int service, void* subject_oid, unsigned int subject_selector,
                               void* base, size_t size, unsigned long long* token);
+
+    /* ---- later additions: appended, so objects built before them keep working ---- */
+    /* OPENR::Fatal: the robot plays the warning of `kind` (an OFatal) and powers off
+     * at once: the run ends without Stop or Destroy, as a failure.  Does not return. */
+    void (*fatal)(unsigned int kind);
 };
 
 /* joint_gain ops */

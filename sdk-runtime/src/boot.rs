@@ -83,6 +83,8 @@ pub enum Ended {
     Signal(i32),
     /// An object called `OPENR::Shutdown`.
     Shutdown,
+    /// An object called `OPENR::Fatal` with this OFatal: the robot powered off.
+    Fatal(u32),
 }
 
 
@@ -142,6 +144,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         clock,
         diag: opts.diag,
         shutdown_requested: AtomicBool::new(false),
+        fatal: std::sync::atomic::AtomicU32::new(crate::runtime::NO_FATAL),
         booting: AtomicBool::new(true),
         timers: Timers::new(),
         vr: crate::vr::VrService::new(robot, trace, crate::audio::Speaker::new(opts.speaker_wav.clone()), crate::audio::Mic::new(mic_pcm)),
@@ -191,9 +194,14 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     // frame thread stopped (sched.rs), so it begins at the same message every run.
     rt.clock.freeze();
     rt.vr.peers.stop_lockstep();
-    rt.sched.take_over(Duration::from_secs(2));
-    rt.sched.release();
-    crate::lifecycle::shutdown(rt, &booted, opts.watchdog, &mut failures);
+    if let Ended::Fatal(kind) = ended {
+        // Powered off: no Stop, no Destroy (the caller holds its turn, blocked for good).
+        failures.0.push(format!("the program called OPENR::Fatal(0x{kind:x}) and the robot powered off"));
+    } else {
+        rt.sched.take_over(Duration::from_secs(2));
+        rt.sched.release();
+        crate::lifecycle::shutdown(rt, &booted, opts.watchdog, &mut failures);
+    }
     let internal = crate::host_api::INTERNAL_ERRORS.load(std::sync::atomic::Ordering::Acquire);
     if internal > 0 {
         failures.0.push(format!("{internal} call(s) into the runtime panicked (a bug of cargo-openr, said above)"));
@@ -269,7 +277,10 @@ fn name_thread(name: &str) {
 fn wait_for_end(rt: &Runtime, run_for: Option<Duration>) -> Ended {
     loop {
         if rt.shutdown_requested.load(std::sync::atomic::Ordering::Acquire) {
-            return Ended::Shutdown;
+            return match rt.fatal.load(std::sync::atomic::Ordering::Acquire) {
+                crate::runtime::NO_FATAL => Ended::Shutdown,
+                kind => Ended::Fatal(kind),
+            };
         }
         if run_for.is_some_and(|total| rt.clock.since_boot() >= total) {
             return Ended::TimeUp;

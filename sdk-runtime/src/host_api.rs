@@ -289,6 +289,26 @@ pub(crate) fn sleep_ns(ns: u64) {
     }
 }
 
+/// OPENR::Fatal (robot-api 4.4): the battery micro plays the warning and powers the
+/// robot off, so no object gets Stop or Destroy; the caller never returns.
+pub(crate) fn fatal(kind: u32) {
+    let Some(rt) = rt() else { return };
+    let warning = match kind {
+        0 => "ofatalMEMORY_STICK: the memory-stick error sound",
+        1 => "ofatalPAUSE_SW: no sound",
+        2 => "ofatalORB",
+        u32::MAX => "ofatalUNDEF: \"Toccata and Fugue\"",
+        _ => "an undefined OFatal value",
+    };
+    let who = object::current().map_or_else(|| "?".to_string(), |o| o.name().to_string());
+    eprintln!("error: object `{who}` called OPENR::Fatal({warning}); the robot powers off (no DoStop, no DoDestroy)");
+    rt.fatal.store(kind, Ordering::Release);
+    rt.request_shutdown();
+    loop {
+        std::thread::park();
+    }
+}
+
 pub(crate) fn robot_design() -> *const c_char {
     inject_panic("robot_design");
     rt().map_or(c"ERS-7".as_ptr(), |rt| rt.design.as_ptr())

@@ -62,6 +62,8 @@ pub struct Runtime {
     /// Data vectors handed out by `new_vector` (freed by `delete_vector`).
     pub vectors: Mutex<Vec<u32>>,
     pub shutdown_requested: AtomicBool,
+    /// The OFatal of an `OPENR::Fatal` call (`NO_FATAL`: none).
+    pub fatal: std::sync::atomic::AtomicU32,
     /// True until every Start has been sent: at `--speed max` virtual time waits for the
     /// boot sequence too (unless an object sleeps in it), so runs are reproducible.
     pub booting: AtomicBool,
@@ -70,6 +72,9 @@ pub struct Runtime {
     /// SIGINT/SIGTERM/SIGHUP received (0: none), seen by every phase of the run.
     pub signal: std::sync::atomic::AtomicI32,
 }
+
+/// `Runtime::fatal` before any `OPENR::Fatal` (ofatalUNDEF is u32::MAX, a real value).
+pub const NO_FATAL: u32 = 0xFFFF_FFFE;
 
 static RUNTIME: OnceLock<Runtime> = OnceLock::new();
 

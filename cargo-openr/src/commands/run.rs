@@ -226,6 +226,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         Ended::TimeUp => "time limit reached".to_string(),
         Ended::Signal(s) => format!("signal {s}"),
         Ended::Shutdown => "OPENR::Shutdown".to_string(),
+        Ended::Fatal(_) => "OPENR::Fatal".to_string(),
     };
     shell.status("Finished", &format!("{} ({how}; {} frames, {} late)", ms_dir.display(), outcome.frames, outcome.late_frames));
     if !outcome.failures.is_empty() {

@@ -82,3 +82,27 @@ fn a_panic_inside_the_runtime_stops_at_the_call_and_fails_the_run() {
     assert!(out.stderr.contains("1 call(s) into the runtime panicked"), "{}", out.stderr);
     assert!(out.code.is_some_and(|c| c != 0), "exit {:?}\n{}", out.code, out.stderr);
 }
+
+#[test]
+fn openr_fatal_powers_the_robot_off_without_stop_and_fails_the_run() {
+    let b = build("fatal");
+    let out = run_ms(&b.ms(), &["--speed", "max", "--for", "5s"]);
+    assert!(out.stdout.contains("Params : can't open /MS/OPEN-R/MW/DATA/P/PARAMS.TXT"), "{}", out.stdout);
+    assert!(
+        out.stderr.contains("error: object `params` called OPENR::Fatal(ofatalMEMORY_STICK: the memory-stick error sound); the robot powers off"),
+        "{}",
+        out.stderr
+    );
+    // nothing of the object runs after the call: not the rest of DoStart, not DoStop
+    assert!(!out.stdout.contains("still running after Fatal") && !out.stdout.contains("Params : DoStop"), "{}", out.stdout);
+    assert!(out.stderr.contains("(OPENR::Fatal;"), "{}", out.stderr);
+    assert!(out.stderr.contains("the program called OPENR::Fatal(0x0) and the robot powered off"), "{}", out.stderr);
+    assert!(out.code.is_some_and(|c| c != 0), "exit {:?}", out.code);
+
+    // with its parameters the same program runs to the time limit and stops cleanly
+    std::fs::create_dir_all(b.ms().join("OPEN-R/MW/DATA/P")).unwrap();
+    std::fs::write(b.ms().join("OPEN-R/MW/DATA/P/PARAMS.TXT"), "0.5\n1.25\n-3\n").unwrap();
+    let out = run_ms(&b.ms(), &["--speed", "max", "--for", "1s"]);
+    assert!(out.stdout.contains("Params : 3 parameters loaded") && out.stdout.contains("Params : DoStop"), "{}", out.stdout);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+}

@@ -197,6 +197,14 @@ OStatus Shutdown(const OBootCondition& bootCondition)
     return oSUCCESS;
 }
 
+OStatus Fatal(OFatal fatal)
+{
+    const openr_host_api* api = openr_host();
+    if (api == 0) return oNOT_FOUND;
+    api->fatal(fatal);
+    return oFAIL;   // not reached: the robot is off
+}
+
 // Only `bitmap` is meaningful: an emulated robot is always booted by the pause button.
 OStatus GetBootCondition(OBootCondition* bootCondition)
 {
