@@ -60,6 +60,8 @@ pub struct RunOptions {
     /// Real time an object may take to answer a life-cycle call, or to run one message
     /// at `--speed max`, before it is reported stuck (lifecycle.rs, sched.rs).
     pub watchdog: Duration,
+    /// Where endpoints bind, port offset and remaps (network-api 11).
+    pub net: crate::net::config::NetOptions,
 }
 
 /// How a run went.
@@ -90,6 +92,7 @@ pub enum Ended {
 
 /// Loads and runs the stick until it ends; returns how it ended.
 pub fn run(opts: &RunOptions) -> Result<Outcome> {
+    crate::net::configure(opts.net.clone());
     let ms = MsDir::new(&opts.ms_dir).map_err(|e| Error::io(&opts.ms_dir, e))?;
     let ms = match &opts.ms_base {
         Some(base) => ms.with_base(base).map_err(|e| Error::io(base, e))?,

@@ -6,6 +6,7 @@ use std::time::Duration;
 use anyhow::Context;
 use openr_wrappers::install;
 use sdk_runtime::boot::{self, Ended, RunOptions};
+use sdk_runtime::net::config::{self as net_config, NetOptions};
 use sdk_runtime::runtime::Diag;
 
 use crate::ops::config::{self, ConfigInputs};
@@ -176,7 +177,6 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     if args.sim == Sim::Mujoco {
         return simulate(&args, &world, &root, shell);
     }
-    sdk_runtime::net::config::apply_cli(args.net_bind, args.port_offset, &args.net_map);
     let ms_base = base_tree(&root, &cfg.design.value, &cfg.base.value)?;
     let mut observers = sdk_runtime::observe::Observers::default();
     if let Some(addr) = args.view {
@@ -204,6 +204,12 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         lenient_connect: args.lenient_connect,
         fp_traps: !args.no_fp_traps,
         watchdog: args.watchdog,
+        net: NetOptions {
+            bind: args.net_bind,
+            port_offset: args.port_offset,
+            addr_map: args.net_map.clone(),
+            port_map: std::env::var(net_config::ENV_PORT_MAP).map(|s| net_config::parse_port_map(&s)).unwrap_or_default(),
+        },
     };
     if let Some(tool) = args.gdb.then_some(Debugger::Gdb).or_else(|| args.valgrind.clone().map(Debugger::Valgrind)) {
         let mut cmd = debugger::command(&tool, &root, &args.tool_args, &["--gdb", "--valgrind", "--tool-arg"])?;

@@ -5,14 +5,23 @@ use std::collections::{BTreeMap, HashMap, HashSet};
 use std::net::Ipv4Addr;
 use std::sync::Mutex;
 
-/// Environment variables set by `cargo openr run` (`--net-bind`, `--port-offset`).
-pub const ENV_BIND: &str = "OPENR_NET_BIND";
-pub const ENV_PORT_OFFSET: &str = "OPENR_NET_PORT_OFFSET";
-/// Explicit remaps, `robot=host` pairs separated by commas (`21=2121,123=40123`).
+/// Explicit remaps, `robot=host` pairs separated by commas (`21=2121,123=40123`), read
+/// by `cargo openr run` into [`NetOptions::port_map`].
 pub const ENV_PORT_MAP: &str = "OPENR_NET_PORT_MAP";
-/// Destination address map (`--net-map`), entries separated by commas:
-/// `10.0.1.2=127.0.0.1` or `10.0.1.2:54321=127.0.0.1:6000`.
-pub const ENV_ADDR_MAP: &str = "OPENR_NET_ADDR_MAP";
+
+/// The network settings of a run (`RunOptions::net`): `--net-bind`, `--port-offset`,
+/// `--net-map`, `OPENR_NET_PORT_MAP`.
+#[derive(Debug, Clone, Default)]
+pub struct NetOptions {
+    /// Host address for the robot's own address (127.0.0.1 when `None`).
+    pub bind: Option<Ipv4Addr>,
+    /// Added to every local port (network-api 11.2).
+    pub port_offset: u16,
+    /// Destination remaps.
+    pub addr_map: Vec<AddrMap>,
+    /// Explicit robot → host port remaps.
+    pub port_map: HashMap<u16, u16>,
+}
 
 /// One `--net-map` entry: connections and datagrams the robot sends to `robot` (all
 /// ports, or `robot_port` only) go to `host` (its port, or `host_port`).
@@ -66,17 +75,15 @@ pub struct NetConfig {
 }
 
 impl NetConfig {
-    pub fn from_env(quiet: bool) -> NetConfig {
-        let bind = std::env::var(ENV_BIND)
-            .ok()
-            .and_then(|s| s.trim().parse::<Ipv4Addr>().ok())
-            .map_or(u32::from(Ipv4Addr::LOCALHOST), u32::from);
-        let offset = std::env::var(ENV_PORT_OFFSET).ok().and_then(|s| s.trim().parse().ok()).unwrap_or(0);
-        let map = std::env::var(ENV_PORT_MAP).map(|s| parse_port_map(&s)).unwrap_or_default();
-        let addr_map = std::env::var(ENV_ADDR_MAP)
-            .map(|s| s.split(',').filter(|e| !e.trim().is_empty()).filter_map(|e| parse_addr_map(e).ok()).collect())
-            .unwrap_or_default();
-        NetConfig { bind, offset, map, addr_map, quiet, announced: Mutex::new(HashSet::new()) }
+    pub fn new(opts: &NetOptions, quiet: bool) -> NetConfig {
+        NetConfig {
+            bind: u32::from(opts.bind.unwrap_or(Ipv4Addr::LOCALHOST)),
+            offset: opts.port_offset.into(),
+            map: opts.port_map.clone(),
+            addr_map: opts.addr_map.clone(),
+            quiet,
+            announced: Mutex::new(HashSet::new()),
+        }
     }
 
     /// The host port for a robot port: explicit map, else privileged ports moved to
@@ -182,21 +189,6 @@ impl NetConfig {
         if seen.insert((robot, host, what)) && !self.quiet {
             eprintln!("net: robot port {robot} ({what}) is host port {host}");
         }
-    }
-}
-
-/// `cargo openr run --net-bind ADDR --port-offset N --net-map …`: hands the settings
-/// to the IPStack (which reads them when it starts) through the environment.
-pub fn apply_cli(bind: Option<Ipv4Addr>, port_offset: u16, addr_map: &[AddrMap]) {
-    if !addr_map.is_empty() {
-        let list: Vec<String> = addr_map.iter().map(|m| m.to_string()).collect();
-        std::env::set_var(ENV_ADDR_MAP, list.join(","));
-    }
-    if let Some(a) = bind {
-        std::env::set_var(ENV_BIND, a.to_string());
-    }
-    if port_offset != 0 {
-        std::env::set_var(ENV_PORT_OFFSET, port_offset.to_string());
     }
 }
 

@@ -96,6 +96,13 @@ pub struct Net {
 }
 
 static NET: OnceLock<Net> = OnceLock::new();
+static OPTIONS: OnceLock<config::NetOptions> = OnceLock::new();
+
+/// The run's network settings, given before any object loads (the IPStack starts on
+/// first use and reads them then).
+pub fn configure(opts: config::NetOptions) {
+    let _ = OPTIONS.set(opts);
+}
 
 /// The IPStack, started on first use (its poll thread included).
 pub fn net() -> &'static Net {
@@ -106,7 +113,7 @@ pub fn net() -> &'static Net {
         // SAFETY: plain syscall; a fresh descriptor we own.
         let fd = unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) };
         assert!(fd >= 0, "eventfd failed");
-        Net { state: Mutex::new(State::new()), config: NetConfig::from_env(quiet), wake_fd: unsafe { OwnedFd::from_raw_fd(fd) } }
+        Net { state: Mutex::new(State::new()), config: NetConfig::new(OPTIONS.get_or_init(Default::default), quiet), wake_fd: unsafe { OwnedFd::from_raw_fd(fd) } }
     });
     if started {
         std::thread::Builder::new().name("ipstack".into()).spawn(|| stack::poll_loop(net())).expect("spawn the IPStack thread");
