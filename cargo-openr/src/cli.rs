@@ -24,6 +24,8 @@ pub enum Command {
     Build(commands::build::Args),
     /// Run a Memory Stick tree (MS/) on the host: load its objects and boot them
     Run(commands::run::Args),
+    /// Replay a recording (`run --record DIR`) or a `--trace` file in the browser, on a timeline
+    View(commands::view::Args),
     /// Measure the runtime (message round trip, throughput, cold start) against the machine's limit
     Bench(commands::bench::Args),
     /// Create a new OPEN-R project (objects, Makefiles, MS/ tree) from a template
@@ -47,6 +49,7 @@ pub fn run(args: Vec<OsString>, shell: &mut Shell) -> anyhow::Result<()> {
         Command::Sdk(a) => commands::sdk::exec(a, shell),
         Command::Build(a) => commands::build::exec(a, shell),
         Command::Run(a) => commands::run::exec(a, shell),
+        Command::View(a) => commands::view::exec(a, shell),
         Command::Bench(a) => commands::bench::exec(a, shell),
         Command::New(a) => commands::new::exec(a, shell),
         Command::Check(a) => commands::check::exec(a, shell),

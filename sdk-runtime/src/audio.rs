@@ -63,6 +63,11 @@ impl WavWriter {
         self.file.seek(SeekFrom::Start(0)).and_then(|_| self.file.write_all(&h)).map_err(|e| Error::io(&self.path, e))
     }
 
+    /// The PCM format the file was created with.
+    pub fn format(&self) -> Format {
+        self.format
+    }
+
     /// Appends PCM already in the file's format.
     pub fn append(&mut self, pcm: &[u8]) -> Result<()> {
         self.file.seek(SeekFrom::End(0)).and_then(|_| self.file.write_all(pcm)).map_err(|e| Error::io(&self.path, e))?;

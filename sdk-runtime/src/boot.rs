@@ -177,6 +177,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     for o in &opts.observers.0 {
         o.attach(rt)?;
     }
+    let _ = rt.vr.observers.set(opts.observers.clone());
     std::thread::Builder::new()
         .name("openr-robot".into())
         .spawn(move || crate::vr::run_frames(rt))
@@ -210,6 +211,9 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         failures.0.push(format!("{internal} call(s) into the runtime panicked (a bug of cargo-openr, said above)"));
     }
     rt.vr.flush_trace();
+    for o in &opts.observers.0 {
+        o.finish();
+    }
     rt.vr.peers.close_all(&format!("the run ended ({ended:?})"));
     // stdout only: fflush(NULL) would wait for stdin's lock, held by a blocked reader.
     unsafe { libc::fflush(crate::console::stdout_file()) };

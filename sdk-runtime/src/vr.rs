@@ -53,6 +53,8 @@ pub struct VrService {
     pub late_frames: std::sync::atomic::AtomicU64,
     /// External robot peers (docs/robot-protocol.md).
     pub peers: crate::peer::Hub,
+    /// In-process observers shown each frame (`--record`); set before the first frame.
+    pub observers: std::sync::OnceLock<crate::observe::Observers>,
 }
 
 /// The camera's service name: rendering is skipped unless something observes it.
@@ -71,6 +73,7 @@ impl VrService {
             frames: std::sync::atomic::AtomicU64::new(0),
             late_frames: std::sync::atomic::AtomicU64::new(0),
             peers: crate::peer::Hub::default(),
+            observers: std::sync::OnceLock::new(),
         }
     }
 
@@ -158,7 +161,8 @@ impl VrService {
         if let Some(vector) = out.sensor_vector {
             self.publish_slice(rt, SERVICE_SENSOR, &vector);
         }
-        if out.camera_due && self.camera_wanted.load(std::sync::atomic::Ordering::Acquire) {
+        let picture = out.camera_due && self.camera_wanted.load(std::sync::atomic::Ordering::Acquire);
+        if picture {
             let mut robot = self.robot();
             let size = robot.image_vector_size();
             if !self.publish(rt, SERVICE_IMAGE, size, |region| robot.render_image_into(out.frame, region)) {
@@ -188,6 +192,12 @@ impl VrService {
             let mut w = t.lock().unwrap_or_else(|p| p.into_inner());
             for r in &out.trace {
                 let _ = writeln!(w, "{}", r.to_json());
+            }
+        }
+        if let Some(observers) = self.observers.get() {
+            let frame = crate::observe::Frame { frame: out.frame, t_ms: out.time_ms, picture, sounds: &played.started };
+            for o in &observers.0 {
+                o.frame(rt, &frame);
             }
         }
     }

@@ -5,7 +5,10 @@
 //! answers from it. The page (`page.html`, shipped inside the binary) loads nothing
 //! else from the network: it polls `/state` (a [`snapshot`]) at the browser's frame
 //! rate and draws the robot in SVG; `/control` takes the `--control` commands (pause,
-//! resume, step, speed).
+//! resume, step, speed). [`record`] writes a run for `cargo openr view DIR`, which
+//! [`replay`] reads back and the same page plays on a timeline (docs/recording.md).
+pub mod record;
+pub mod replay;
 mod server;
 pub mod snapshot;
 

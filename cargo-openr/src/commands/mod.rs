@@ -8,3 +8,4 @@ pub mod ms;
 pub mod new;
 pub mod run;
 pub mod sdk;
+pub mod view;

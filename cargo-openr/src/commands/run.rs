@@ -70,6 +70,9 @@ pub struct Args {
     /// Serve a live view of the robot in the browser on ADDR (default 127.0.0.1:0: a free loopback port; printed as `Viewing http://ADDR/`)
     #[arg(long, value_name = "ADDR", num_args = 0..=1, default_missing_value = "127.0.0.1:0", value_parser = parse_view_addr)]
     view: Option<std::net::SocketAddr>,
+    /// Record the run into DIR: its trace, camera pictures and speaker sound (docs/recording.md), to replay with `cargo openr view DIR`
+    #[arg(long, value_name = "DIR", conflicts_with = "trace")]
+    record: Option<PathBuf>,
     /// Run no frame before a robot peer owning the clock (lockstep) has attached
     #[arg(long)]
     robot_wait: bool,
@@ -185,10 +188,16 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         eprintln!("Viewing http://{}/", view.addr());
         observers.0.push(std::sync::Arc::new(view));
     }
+    let mut trace = args.trace.clone();
+    if let Some(dir) = &args.record {
+        let recorder = openr_view::record::Recorder::create(dir).map_err(anyhow::Error::msg)?;
+        trace = Some(recorder.trace_path());
+        observers.0.push(std::sync::Arc::new(recorder));
+    }
     let opts = RunOptions {
         ms_base,
         system_objects: install::system_objects(&root),
-        trace: args.trace.clone(),
+        trace,
         speed: cfg.speed.value,
         speaker_wav: args.speaker_wav.clone(),
         mic_wav: args.mic_wav.clone(),
@@ -278,6 +287,9 @@ fn check_sim_options(args: &Args) -> anyhow::Result<Vec<Robot<'_>>> {
     }
     if args.view.is_some() {
         anyhow::bail!("--view shows the built-in robot only: drop --sim mujoco or --view");
+    }
+    if args.record.is_some() {
+        anyhow::bail!("--record records the built-in robot only: drop --sim mujoco or --record (--trace works with both)");
     }
     if args.robot_socket.is_some() || args.robot_tcp.is_some() || args.robot_wait {
         anyhow::bail!("--sim mujoco attaches the simulator itself: drop --robot-socket/--robot-tcp/--robot-wait");

@@ -5,7 +5,7 @@ use std::fs;
 use crate::support::{build, run_ms};
 
 /// The data chunk of a WAV file.
-fn wav_data(bytes: &[u8]) -> &[u8] {
+pub(crate) fn wav_data(bytes: &[u8]) -> &[u8] {
     let mut o = 12;
     while o + 8 <= bytes.len() {
         let len = u32::from_le_bytes(bytes[o + 4..o + 8].try_into().unwrap()) as usize;

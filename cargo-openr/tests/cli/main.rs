@@ -16,6 +16,7 @@ mod load;
 mod mujoco;
 mod net;
 mod peer;
+mod replay;
 mod robot;
 mod rp;
 mod run;

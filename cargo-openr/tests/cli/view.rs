@@ -25,7 +25,7 @@ fn view_addr(run: &mut Running) -> String {
 }
 
 /// One HTTP/1.0 request; (status, body).
-fn http(addr: &str, method: &str, path: &str, body: &str) -> (u16, String) {
+pub(crate) fn http(addr: &str, method: &str, path: &str, body: &str) -> (u16, String) {
     let mut s = TcpStream::connect(addr).unwrap();
     write!(s, "{method} {path} HTTP/1.0\r\nHost: {addr}\r\nContent-Length: {}\r\n\r\n{body}", body.len()).unwrap();
     let mut out = String::new();
@@ -57,11 +57,11 @@ fn control(addr: &str, line: &str) -> u64 {
 }
 
 /// Headless Chromium on the page: `--dump-dom` (the DOM after load), or a screenshot.
-fn chromium(url: &str, screenshot: Option<&Path>) -> String {
+pub(crate) fn chromium(url: &str, screenshot: Option<&Path>) -> String {
     chromium_with(url, screenshot, &[])
 }
 
-fn chromium_with(url: &str, screenshot: Option<&Path>, extra: &[&str]) -> String {
+pub(crate) fn chromium_with(url: &str, screenshot: Option<&Path>, extra: &[&str]) -> String {
     let profile = tempfile::tempdir().unwrap();
     let mut cmd = Command::new("chromium");
     cmd.args(["--headless", "--disable-gpu", "--no-sandbox", "--no-first-run", "--hide-scrollbars"]).arg(format!("--user-data-dir={}", profile.path().display()));
@@ -75,7 +75,7 @@ fn chromium_with(url: &str, screenshot: Option<&Path>, extra: &[&str]) -> String
 }
 
 /// The text of the element of class `class` after `data-locator="loc"` in a DOM dump.
-fn cell(dom: &str, loc: &str, class: &str) -> String {
+pub(crate) fn cell(dom: &str, loc: &str, class: &str) -> String {
     let at = dom.find(&format!("<tr data-locator=\"{loc}\"")).unwrap_or_else(|| panic!("no row for {loc}"));
     let rest = &dom[at..];
     let from = rest.find(&format!("{class}\">")).unwrap_or_else(|| panic!("no {class} for {loc}")) + class.len() + 2;
@@ -83,7 +83,7 @@ fn cell(dom: &str, loc: &str, class: &str) -> String {
 }
 
 /// The value of attribute `attr` of the element with `id`.
-fn attr_of_id(dom: &str, id: &str, attr: &str) -> String {
+pub(crate) fn attr_of_id(dom: &str, id: &str, attr: &str) -> String {
     let at = dom.find(&format!("id=\"{id}\"")).unwrap_or_else(|| panic!("no element {id}"));
     let tag_start = dom[..at].rfind('<').unwrap();
     let tag = &dom[tag_start..tag_start + dom[tag_start..].find('>').unwrap()];
@@ -91,7 +91,7 @@ fn attr_of_id(dom: &str, id: &str, attr: &str) -> String {
     tag[from..].split('"').next().unwrap().to_string()
 }
 
-fn text_of_id(dom: &str, id: &str) -> String {
+pub(crate) fn text_of_id(dom: &str, id: &str) -> String {
     let at = dom.find(&format!("id=\"{id}\"")).unwrap_or_else(|| panic!("no element {id}"));
     let from = at + dom[at..].find('>').unwrap() + 1;
     dom[from..].split('<').next().unwrap().to_string()

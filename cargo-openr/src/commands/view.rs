@@ -1,0 +1,29 @@
+//! `cargo openr view PATH`: replays a recording (`cargo openr run MS --record DIR`) or
+//! a `--trace` file in the live view's page, with a timeline (seek, play, step).
+use std::path::PathBuf;
+
+use crate::shell::Shell;
+
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// A directory written by `run --record`, or a trace file written by `run --trace`
+    #[arg(value_name = "DIR|TRACE")]
+    path: PathBuf,
+    /// Serve the page on ADDR (default 127.0.0.1:0: a free loopback port; printed as `Viewing http://ADDR/`)
+    #[arg(long, value_name = "ADDR", default_value = "127.0.0.1:0")]
+    addr: std::net::SocketAddr,
+}
+
+pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
+    let rec = openr_view::replay::open(&args.path).map_err(anyhow::Error::msg)?;
+    let end = rec.states.last().map_or(0, |s| s["t_ms"].as_u64().unwrap_or(0));
+    let what = format!("{} ({} moments to {end} ms, {} camera pictures{})", args.path.display(), rec.states.len(), rec.pictures.len(), if rec.speaker.is_some() { ", sound" } else { "" });
+    let view = openr_view::View::bind(args.addr).map_err(|e| anyhow::anyhow!(e.replacen("--view", "--addr", 1)))?;
+    view.replay(rec).map_err(anyhow::Error::msg)?;
+    shell.status("Replaying", &what);
+    eprintln!("Viewing http://{}/", view.addr());
+    // The server's threads answer until the user stops the command (Ctrl-C).
+    loop {
+        std::thread::park();
+    }
+}

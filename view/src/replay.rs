@@ -1,0 +1,246 @@
+//! `cargo openr view PATH`: a recording (`--record DIR`, docs/recording.md) or a bare
+//! `--trace` file read back as the moments the page draws. Each moment is a snapshot
+//! (the shape `/state` serves live) built from the trace: the joints of the newest
+//! sensor record, the LEDs, ears, face mode and motor power as last set, the paw
+//! switches and the accelerometer; one per virtual time at which the trace has records.
+//! Values the trace does not carry (joint targets, distances, the battery) are absent.
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use sdk_runtime::robot::model::{Design, Leg, Part, PrimitiveKind};
+use sdk_runtime::robot::VirtualRobot;
+use serde_json::{json, Value};
+
+use crate::record::{CAMERA_INDEX, FORMAT, MANIFEST, TRACE, VERSION};
+
+/// A recording ready to serve.
+pub struct Recording {
+    /// What was opened (a directory or a trace file).
+    pub source: PathBuf,
+    pub design: &'static str,
+    /// Snapshots in time order.
+    pub states: Vec<Value>,
+    /// Camera picture n (1-based) is `pictures[n - 1]`.
+    pub pictures: Vec<PathBuf>,
+    pub speaker: Option<PathBuf>,
+}
+
+type Res<T> = std::result::Result<T, String>;
+
+/// Opens a recording directory or a `--trace` file; the error names the file (and line).
+pub fn open(path: &Path) -> Res<Recording> {
+    let meta = std::fs::metadata(path).map_err(|e| format!("{}: {}", path.display(), io_reason(&e)))?;
+    if !meta.is_dir() {
+        let (design, records) = read_trace(path, None)?;
+        return Ok(Recording { source: path.into(), design: design.name(), states: states(design, &records, &[]), pictures: Vec::new(), speaker: None });
+    }
+    let manifest_path = path.join(MANIFEST);
+    if !manifest_path.is_file() {
+        return Err(format!(
+            "{}: not a recording (it has no {MANIFEST}): give a directory written by `cargo openr run MS --record DIR`, or a `--trace` file",
+            path.display()
+        ));
+    }
+    let text = std::fs::read_to_string(&manifest_path).map_err(|e| format!("{}: {}", manifest_path.display(), io_reason(&e)))?;
+    let m: Value = serde_json::from_str(&text).map_err(|e| format!("{}:{}: not JSON: {e}", manifest_path.display(), e.line()))?;
+    if m["format"] != FORMAT {
+        return Err(format!("{}: not a recording manifest (its \"format\" is {}, not \"{FORMAT}\")", manifest_path.display(), m["format"]));
+    }
+    if m["version"].as_u64() != Some(VERSION) {
+        return Err(format!("{}: recording version {} (this cargo-openr reads version {VERSION})", manifest_path.display(), m["version"]));
+    }
+    let design = m["design"].as_str().and_then(Design::from_name).ok_or_else(|| format!("{}: unknown robot design {}", manifest_path.display(), m["design"]))?;
+    let file = |key: &str, default: &str| path.join(m[key].as_str().unwrap_or(default));
+    let (_, records) = read_trace(&file("trace", TRACE), Some(design))?;
+    let camera = read_camera_index(path, &file("camera", CAMERA_INDEX))?;
+    let speaker = Some(file("speaker", crate::record::SPEAKER)).filter(|p| p.is_file());
+    let times: Vec<u64> = camera.iter().map(|c| c.0).collect();
+    Ok(Recording {
+        source: path.into(),
+        design: design.name(),
+        states: states(design, &records, &times),
+        pictures: camera.into_iter().map(|c| c.1).collect(),
+        speaker,
+    })
+}
+
+fn io_reason(e: &std::io::Error) -> String {
+    match e.kind() {
+        std::io::ErrorKind::NotFound => "no such file or directory".into(),
+        _ => e.to_string(),
+    }
+}
+
+/// The records of a trace, each checked for the common fields, and the design its
+/// joints belong to (`design` when the manifest names it).
+fn read_trace(path: &Path, design: Option<Design>) -> Res<(Design, Vec<Value>)> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {}", path.display(), io_reason(&e)))?;
+    let mut records = Vec::new();
+    let mut last_t = 0;
+    let lines: Vec<&str> = text.split('\n').collect();
+    for (i, line) in lines.iter().enumerate() {
+        if line.trim().is_empty() {
+            continue;
+        }
+        let at = format!("{}:{}", path.display(), i + 1);
+        let r: Value = serde_json::from_str(line).map_err(|e| {
+            if i + 1 == lines.len() && e.is_eof() {
+                format!("{at}: the trace ends in the middle of a record (was the run killed while writing it?)")
+            } else {
+                format!("{at}: not a trace record: {e}")
+            }
+        })?;
+        let (Some(t), Some(_), Some(_)) = (r["t_ms"].as_u64(), r["frame"].as_u64(), r["kind"].as_str()) else {
+            return Err(format!("{at}: not a trace record: it needs \"t_ms\", \"frame\" and \"kind\" (docs/recording.md)"));
+        };
+        if t < last_t {
+            return Err(format!("{at}: time goes back ({t} ms after {last_t} ms): not one run's trace"));
+        }
+        last_t = t;
+        records.push(r);
+    }
+    if records.is_empty() {
+        return Err(format!("{}: no trace records: nothing to replay", path.display()));
+    }
+    let design = match design {
+        Some(d) => d,
+        None => guess_design(&records).ok_or_else(|| format!("{}: its joints belong to no robot design cargo-openr knows", path.display()))?,
+    };
+    Ok((design, records))
+}
+
+/// The first design whose joints include every joint of the first sensor record.
+fn guess_design(records: &[Value]) -> Option<Design> {
+    let Some(joints) = records.iter().find(|r| r["kind"] == "sensor").and_then(|r| r["joints"].as_object()) else {
+        return Some(Design::Ers7);
+    };
+    Design::ALL.into_iter().find(|d| {
+        let robot = VirtualRobot::new(*d);
+        let known: Vec<&str> = robot.model().primitives().iter().map(|p| p.locator).collect();
+        joints.keys().all(|k| known.contains(&k.as_str()))
+    })
+}
+
+/// `camera.jsonl`: (t_ms, picture file) per line, pictures numbered 1, 2, … in order.
+fn read_camera_index(dir: &Path, index: &Path) -> Res<Vec<(u64, PathBuf)>> {
+    let text = match std::fs::read_to_string(index) {
+        Ok(t) => t,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) => return Err(format!("{}: {}", index.display(), io_reason(&e))),
+    };
+    let mut out = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        if line.trim().is_empty() {
+            continue;
+        }
+        let at = format!("{}:{}", index.display(), i + 1);
+        let c: Value = serde_json::from_str(line).map_err(|e| format!("{at}: not a camera record: {e}"))?;
+        let (Some(n), Some(t), Some(file)) = (c["n"].as_u64(), c["t_ms"].as_u64(), c["file"].as_str()) else {
+            return Err(format!("{at}: not a camera record: it needs \"n\", \"t_ms\" and \"file\""));
+        };
+        if n != out.len() as u64 + 1 {
+            return Err(format!("{at}: picture {n} where picture {} was due", out.len() + 1));
+        }
+        let png = dir.join(file);
+        if !png.is_file() {
+            return Err(format!("{at}: the picture {} is missing", png.display()));
+        }
+        out.push((t, png));
+    }
+    Ok(out)
+}
+
+/// What the trace says about the robot so far.
+#[derive(Default)]
+struct Now {
+    joints: HashMap<String, f64>,
+    leds: HashMap<String, (u64, u64)>,
+    ears: HashMap<String, u64>,
+    face_mode: u64,
+    motor_power: bool,
+    paws: [bool; 4],
+    accel: [f64; 3],
+}
+
+/// One snapshot per virtual time with records; `pictures` are the camera's times.
+fn states(design: Design, records: &[Value], pictures: &[u64]) -> Vec<Value> {
+    let robot = VirtualRobot::new(design);
+    let prims = robot.model().primitives();
+    let mut now = Now::default();
+    let mut out = Vec::new();
+    for (i, r) in records.iter().enumerate() {
+        now.apply(r);
+        let t = r["t_ms"].as_u64().unwrap_or(0);
+        if records.get(i + 1).is_some_and(|n| n["t_ms"].as_u64() == Some(t)) {
+            continue; // the moment's other records first
+        }
+        let frame = r["frame"].as_u64().unwrap_or(0);
+        let camera_images = pictures.partition_point(|&p| p <= t);
+        out.push(now.snapshot(design, prims, t, frame, camera_images));
+    }
+    out
+}
+
+impl Now {
+    fn apply(&mut self, r: &Value) {
+        let loc = || r["locator"].as_str().unwrap_or("").to_string();
+        match r["kind"].as_str().unwrap_or("") {
+            "sensor" => {
+                if let Some(j) = r["joints"].as_object() {
+                    for (k, v) in j {
+                        self.joints.insert(k.clone(), v.as_f64().unwrap_or(0.0));
+                    }
+                }
+                for (k, a) in self.accel.iter_mut().enumerate() {
+                    *a = r["accel"][k].as_f64().unwrap_or(0.0);
+                }
+                for (k, p) in self.paws.iter_mut().enumerate() {
+                    *p = r["paws"][k].as_bool().unwrap_or(false);
+                }
+            }
+            "led" => {
+                let v = match r["on"].as_bool() {
+                    Some(on) => (if on { 255 } else { 0 }, 0),
+                    None => (r["intensity"].as_u64().unwrap_or(0), r["mode"].as_u64().unwrap_or(0)),
+                };
+                self.leds.insert(loc(), v);
+            }
+            "ear" => {
+                self.ears.insert(loc(), r["state"].as_u64().unwrap_or(0));
+            }
+            "face_mode" => self.face_mode = r["mode"].as_u64().unwrap_or(0),
+            "motor_power" => self.motor_power = r["on"].as_bool().unwrap_or(false),
+            _ => {}
+        }
+    }
+
+    fn snapshot(&self, design: Design, prims: &[sdk_runtime::robot::model::Primitive], t: u64, frame: u64, camera_images: usize) -> Value {
+        let (mut joints, mut leds, mut ears, mut sensors) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        for p in prims {
+            let loc = p.locator;
+            match p.kind {
+                PrimitiveKind::Joint2 => joints.push(json!({ "locator": loc, "deg": self.joints.get(loc).copied().unwrap_or(0.0), "target_deg": null })),
+                PrimitiveKind::Led2 | PrimitiveKind::Led3 => {
+                    let (value, mode) = self.leds.get(loc).copied().unwrap_or((0, 0));
+                    let kind = if p.kind == PrimitiveKind::Led2 { 2 } else { 3 };
+                    leds.push(json!({ "locator": loc, "kind": kind, "value": value, "mode": mode }));
+                }
+                PrimitiveKind::Joint3 | PrimitiveKind::Joint4 => ears.push(json!({ "locator": loc, "state": self.ears.get(loc).copied().unwrap_or(0) })),
+                PrimitiveKind::Sensor(_) => match p.part {
+                    Part::PawSwitch(leg) => {
+                        let k = Leg::ALL.iter().position(|l| *l == leg).unwrap_or(0);
+                        sensors.push(json!({ "locator": loc, "kind": "switch", "value": self.paws[k] as u8 }));
+                    }
+                    Part::Accel(k) => sensors.push(json!({ "locator": loc, "kind": "accel", "value": (self.accel[k as usize % 3] * 1e6).round() })),
+                    _ => {}
+                },
+                _ => {}
+            }
+        }
+        json!({
+            "design": design.name(), "frame": frame, "t_ms": t, "paused": false, "speed": "replay",
+            "motor_power": self.motor_power, "camera_images": camera_images, "face_mode": self.face_mode,
+            "joints": joints, "leds": leds, "ears": ears, "sensors": sensors, "battery": null,
+        })
+    }
+}
