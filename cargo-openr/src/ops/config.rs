@@ -86,57 +86,37 @@ pub struct ProjectFile {
     pub base: Option<(String, usize)>,
 }
 
-/// Parses the subset of TOML `openr.toml` uses: `key = "string"` or `key = number`,
-/// `#` comments, blank lines. Errors read `<file>:<line>: …`.
+/// Parses an `openr.toml` (TOML, top-level keys only: strings or numbers). Errors read
+/// `<file>:<line>: …`.
 pub fn parse_project_file(path: &Path, text: &str) -> anyhow::Result<ProjectFile> {
+    type Keys = std::collections::BTreeMap<toml::Spanned<String>, toml::Spanned<toml::Value>>;
+    let line_of = |offset: usize| text[..offset.min(text.len())].matches('\n').count() + 1;
+    let keys: Keys = toml::from_str(text).map_err(|e| {
+        let line = e.span().map_or(1, |s| line_of(s.start));
+        anyhow::anyhow!("{}:{line}: {}", path.display(), e.message())
+    })?;
     let mut out = ProjectFile::default();
-    for (i, raw) in text.lines().enumerate() {
-        let n = i + 1;
-        let line = strip_comment(raw).trim();
-        if line.is_empty() {
-            continue;
-        }
+    for (key, value) in keys {
+        let n = line_of(key.span().start);
         let err = |m: String| anyhow::anyhow!("{}:{n}: {m}", path.display());
-        let Some((key, value)) = line.split_once('=') else {
-            return Err(err(format!("expected `key = value`, found `{line}`")));
+        let value = match value.get_ref() {
+            toml::Value::String(s) => s.clone(),
+            toml::Value::Integer(i) => i.to_string(),
+            toml::Value::Float(f) => f.to_string(),
+            other => return Err(err(format!("`{}` is a {}: write a string (\"…\") or a number", key.get_ref(), other.type_str()))),
         };
-        let (key, value) = (key.trim(), value.trim());
-        let value = if let Some(inner) = value.strip_prefix('"') {
-            let Some(inner) = inner.strip_suffix('"') else { return Err(err(format!("unterminated string `{value}`"))) };
-            inner.replace("\\\"", "\"").replace("\\\\", "\\")
-        } else if !value.is_empty() && value.chars().all(|c| c.is_ascii_digit() || c == '.') {
-            value.to_string()
-        } else {
-            return Err(err(format!("`{value}` is not a value: write a string (\"…\") or a number")));
-        };
-        let slot = match key {
+        let slot = match key.get_ref().as_str() {
             "sdk" => &mut out.sdk,
             "design" => &mut out.design,
             "speed" => &mut out.speed,
             "cxxflags" => &mut out.cxxflags,
             "ldflags" => &mut out.ldflags,
             "base" => &mut out.base,
-            _ => return Err(err(format!("unknown key `{key}` (known: sdk, design, speed, cxxflags, ldflags, base)"))),
+            k => return Err(err(format!("unknown key `{k}` (known: sdk, design, speed, cxxflags, ldflags, base)"))),
         };
-        if slot.is_some() {
-            return Err(err(format!("`{key}` is set twice")));
-        }
         *slot = Some((value, n));
     }
     Ok(out)
-}
-
-/// `#` starts a comment outside strings.
-fn strip_comment(line: &str) -> &str {
-    let mut in_str = false;
-    for (i, c) in line.char_indices() {
-        match c {
-            '"' => in_str = !in_str,
-            '#' if !in_str => return &line[..i],
-            _ => {}
-        }
-    }
-    line
 }
 
 /// The `openr.toml` of the project at `dir` (or of its nearest parent that has one).
@@ -251,15 +231,22 @@ mod tests {
     use super::*;
 
     #[test]
-    fn project_file_subset() {
-        let f = parse_project_file(Path::new("openr.toml"), "# c\nsdk = \"../sdk\" # root\n\ndesign = \"ERS-210\"\nspeed = 4\nbase = \"WLAN\"\n").unwrap();
+    fn project_file_is_toml_with_lines_in_errors() {
+        let f = parse_project_file(Path::new("openr.toml"), "# c\nsdk = \"../sdk\" # root\n\ndesign = 'ERS-210'\nspeed = 4\nbase = \"WLAN\"\n").unwrap();
         assert_eq!(f.base, Some(("WLAN".into(), 6)));
         assert_eq!(f.sdk, Some(("../sdk".into(), 2)));
         assert_eq!(f.design, Some(("ERS-210".into(), 4)));
         assert_eq!(f.speed, Some(("4".into(), 5)));
-        for (text, want) in [("colour = \"red\"\n", "openr.toml:1: unknown key `colour`"), ("x\n", "expected `key = value`"), ("[a]\n", "expected"), ("speed = max\n", "not a value")] {
+        for (text, want) in [
+            ("colour = \"red\"\n", "openr.toml:1: unknown key `colour`"),
+            ("sdk = \"a\"\nx\n", "openr.toml:2: "),
+            ("[a]\nb = 1\n", "openr.toml:1: `a` is a table"),
+            ("\nspeed = max\n", "openr.toml:2: "),
+            ("base = \"WLAN\"\nbase = \"BASIC\"\n", "openr.toml:2: "),
+            ("design = \"ERS-7\n", "openr.toml:1: "),
+        ] {
             let e = parse_project_file(Path::new("openr.toml"), text).unwrap_err().to_string();
-            assert!(e.contains(want), "{text}: {e}");
+            assert!(e.contains(want), "{text:?}: {e}");
         }
     }
 

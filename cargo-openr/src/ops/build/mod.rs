@@ -106,10 +106,9 @@ pub fn discover(dir: &Path) -> anyhow::Result<Vec<Object>> {
             let name = cfg.object_name.clone();
             let bin = makefile_bin(d).or_else(|| object_cfg_bin(&object_cfg, &name)).unwrap_or_else(|| derived_bin(&name));
             out.push(Object { name, dir: d.to_path_buf(), bin, kind: Kind::Cxx });
-        } else if let Ok(toml) = fs::read_to_string(d.join("Cargo.toml")) {
-            if toml.contains("cdylib") {
-                let name = toml_value(&toml, "name").unwrap_or_else(|| "object".into());
-                let bin = toml_value(&toml, "bin").unwrap_or_else(|| derived_bin(&name));
+        } else if let Ok(text) = fs::read_to_string(d.join("Cargo.toml")) {
+            if let Some((name, bin)) = rust_object(&d.join("Cargo.toml"), &text)? {
+                let bin = bin.unwrap_or_else(|| derived_bin(&name));
                 out.push(Object { name, dir: d.to_path_buf(), bin, kind: Kind::Rust });
             }
         }
@@ -167,12 +166,22 @@ fn derived_bin(name: &str) -> String {
     format!("{stem}.BIN")
 }
 
-/// `key = "value"` anywhere in a Cargo.toml (first occurrence).
-fn toml_value(toml: &str, key: &str) -> Option<String> {
-    toml.lines().find_map(|l| {
-        let (k, v) = l.split_once('=')?;
-        (k.trim() == key).then(|| v.trim().trim_matches('"').to_string())
-    })
+/// A Cargo.toml that builds a `cdylib` package is a Rust object: its package name and
+/// `[package.metadata.openr] bin`, if given. A workspace manifest or an rlib is not.
+fn rust_object(path: &Path, text: &str) -> anyhow::Result<Option<(String, Option<String>)>> {
+    let doc: toml::Table = toml::from_str(text).map_err(|e| {
+        let line = e.span().map_or(1, |s| text[..s.start.min(text.len())].matches('\n').count() + 1);
+        anyhow::anyhow!("{}:{line}: {}", path.display(), e.message())
+    })?;
+    let cdylib = doc
+        .get("lib")
+        .and_then(|l| l.get("crate-type"))
+        .and_then(|t| t.as_array())
+        .is_some_and(|types| types.iter().any(|t| t.as_str() == Some("cdylib")));
+    let Some(package) = doc.get("package").filter(|_| cdylib) else { return Ok(None) };
+    let name = package.get("name").and_then(|n| n.as_str()).unwrap_or("object").to_string();
+    let bin = package.get("metadata").and_then(|m| m.get("openr")).and_then(|o| o.get("bin")).and_then(|b| b.as_str()).map(str::to_string);
+    Ok(Some((name, bin)))
 }
 
 /// Builds the project; `emit` sees every event as it happens.
@@ -310,5 +319,18 @@ mod tests {
         fs::write(&d, "a.o: a.cc \\\n  b.h c.h\n").unwrap();
         assert_eq!(dep_files(&d).unwrap(), [PathBuf::from("a.cc"), "b.h".into(), "c.h".into()]);
         let _ = fs::remove_file(d);
+    }
+
+    #[test]
+    fn a_rust_object_is_a_cdylib_package_read_as_toml() {
+        let p = Path::new("Cargo.toml");
+        let walk = "[package]\nname = \"rust-walk\" # the object\n[lib]\ncrate-type = [\"cdylib\"]\n[package.metadata.openr]\nbin = \"RWALK.BIN\"\n";
+        assert_eq!(rust_object(p, walk).unwrap(), Some(("rust-walk".into(), Some("RWALK.BIN".into()))));
+        // "cdylib" in a comment or a dependency's name does not make an object
+        let lib = "[package]\nname = \"cdylib-helper\" # not a cdylib\n[lib]\ncrate-type = [\"rlib\"]\n";
+        assert_eq!(rust_object(p, lib).unwrap(), None);
+        assert_eq!(rust_object(p, "[workspace]\nmembers = [\"a\"]\n").unwrap(), None);
+        let e = rust_object(p, "[package]\nname = \"x\"\n[lib\n").unwrap_err().to_string();
+        assert!(e.starts_with("Cargo.toml:3: "), "{e}");
     }
 }
