@@ -1,7 +1,7 @@
 //! The command line: a clap definition per subcommand in `commands/`, nothing else.
 use std::ffi::OsString;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 use crate::commands;
 use crate::shell::Shell;
@@ -43,12 +43,15 @@ pub enum Command {
 }
 
 pub fn run(args: Vec<OsString>, shell: &mut Shell) -> anyhow::Result<()> {
-    let cli = Cli::try_parse_from(args).unwrap_or_else(|e| e.exit());
+    let matches = Cli::command().try_get_matches_from(args).unwrap_or_else(|e| e.exit());
+    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
+    // `run` rebuilds its children's command lines from what was given (ops::child_args).
+    let given = matches.subcommand().map(|(_, m)| m.clone()).unwrap_or_default();
     shell.set_color(cli.color);
     match cli.command {
         Command::Sdk(a) => commands::sdk::exec(a, shell),
         Command::Build(a) => commands::build::exec(a, shell),
-        Command::Run(a) => commands::run::exec(a, shell),
+        Command::Run(a) => commands::run::exec(a, &given, shell),
         Command::View(a) => commands::view::exec(a, shell),
         Command::Bench(a) => commands::bench::exec(a, shell),
         Command::New(a) => commands::new::exec(a, shell),

@@ -9,6 +9,7 @@ use sdk_runtime::boot::{self, Ended, RunOptions};
 use sdk_runtime::net::config::{self as net_config, NetOptions};
 use sdk_runtime::runtime::Diag;
 
+use crate::ops::child_args::Forward;
 use crate::ops::config::{self, ConfigInputs};
 use crate::ops::debugger::{self, Debugger};
 use crate::ops::{sdk, sim};
@@ -167,7 +168,7 @@ fn parse_watchdog(s: &str) -> Result<Duration, String> {
     Ok(d)
 }
 
-pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
+pub fn exec(args: Args, given: &clap::ArgMatches, shell: &mut Shell) -> anyhow::Result<()> {
     shell.set_quiet(args.quiet);
     let world = check_sim_options(&args)?;
     let ms_dir = args.ms_dirs[0].clone();
@@ -178,7 +179,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let root = cfg.sdk.value;
     sdk::prepare(&root)?;
     if args.sim == Sim::Mujoco {
-        return simulate(&args, &world, &root, shell);
+        return simulate(&args, given, &world, &root, shell);
     }
     let ms_base = base_tree(&root, &cfg.design.value, &cfg.base.value)?;
     let mut observers = sdk_runtime::observe::Observers::default();
@@ -317,48 +318,54 @@ fn check_sim_options(args: &Args) -> anyhow::Result<Vec<Robot<'_>>> {
     Ok(world)
 }
 
+/// What `--sim mujoco` does with an option of `run` for the robots' runtimes: every
+/// option not named here is passed on as given (`ops::child_args`).
+fn to_child(id: &str) -> Forward {
+    match id {
+        // the world's own (the peer gets them), refused with --sim mujoco, or given below
+        "ms_dirs" | "sim" | "scene" | "robots" | "seed" | "sim_args" | "gdb" | "valgrind" | "tool_args" | "view" | "record" | "robot_socket"
+        | "robot_tcp" | "robot_wait" | "sdk" => Forward::Caller,
+        // per robot
+        "trace" | "camera_phase" | "net_bind" | "control" | "speaker_wav" | "mic_wav" => Forward::Caller,
+        _ => Forward::Same,
+    }
+}
+
+/// Robot k's runtime: `run MS --sdk ROOT`, every option given to us (`to_child`), and
+/// what differs per robot.
+fn child_args(args: &Args, given: &clap::ArgMatches, k: usize, robot: &Robot, root: &Path) -> Vec<OsString> {
+    use clap::Args as _;
+    let mut a: Vec<OsString> = vec![robot.ms.into(), "--sdk".into(), root.into()];
+    a.extend(crate::ops::child_args::forwarded(&Args::augment_args(clap::Command::new("run")), given, to_child));
+    let mut opt = |name: &str, v: Option<OsString>| {
+        if let Some(v) = v {
+            a.push(name.into());
+            a.push(v);
+        }
+    };
+    opt("--trace", args.trace.as_ref().map(|t| per_robot(t, k).into()));
+    // Cameras of neighbouring robots a frame apart: the simulator draws a quarter of
+    // them per frame, alongside the physics step, instead of all every fourth frame.
+    let phase = (args.camera_phase + (k as u64 % 4) * 8) % 1000;
+    opt("--camera-phase", (phase != 0).then(|| phase.to_string().into()));
+    // The world's pause button and the sound files belong to robot 0: pausing one
+    // runtime holds the lockstep of all.
+    if k == 0 {
+        opt("--control", args.control.clone().map(Into::into));
+        opt("--speaker-wav", args.speaker_wav.clone().map(Into::into));
+        opt("--mic-wav", args.mic_wav.clone().map(Into::into));
+    }
+    opt("--net-bind", Some(robot.ip.to_string().into()));
+    a
+}
+
 /// `--sim mujoco`: each robot of `world` in its own runtime; the peer in the SDK root
 /// simulates them all.
-fn simulate(args: &Args, world: &[Robot], root: &Path, shell: &mut Shell) -> anyhow::Result<()> {
+fn simulate(args: &Args, given: &clap::ArgMatches, world: &[Robot], root: &Path, shell: &mut Shell) -> anyhow::Result<()> {
     let robots = world.len();
     let mut plans = Vec::new();
     for (k, robot) in world.iter().enumerate() {
-        let mut a: Vec<OsString> = vec![robot.ms.into(), "--sdk".into(), root.into()];
-        let mut opt = |name: &str, v: Option<OsString>| {
-            if let Some(v) = v {
-                a.push(name.into());
-                a.push(v);
-            }
-        };
-        opt("--for", args.run_for.map(|d| format!("{}ms", d.as_millis()).into()));
-        opt("--design", args.design.clone().map(Into::into));
-        opt("--watchdog", Some(format!("{}ms", args.watchdog.as_millis()).into()));
-        opt("--speed", args.speed.clone().map(Into::into));
-        opt("--base", args.base.clone().map(Into::into));
-        opt("--trace", args.trace.as_ref().map(|t| per_robot(t, k).into()));
-        opt("--images", args.images.clone().map(Into::into));
-        // Cameras of neighbouring robots a frame apart: the simulator draws a quarter of
-        // them per frame, alongside the physics step, instead of all every fourth frame.
-        let phase = (args.camera_phase + (k as u64 % 4) * 8) % 1000;
-        opt("--camera-phase", (phase != 0).then(|| phase.to_string().into()));
-        // The world's pause button and the sound files belong to robot 0: pausing one
-        // runtime holds the lockstep of all.
-        if k == 0 {
-            opt("--control", args.control.clone().map(Into::into));
-            opt("--speaker-wav", args.speaker_wav.clone().map(Into::into));
-            opt("--mic-wav", args.mic_wav.clone().map(Into::into));
-        }
-        opt("--net-bind", Some(robot.ip.to_string().into()));
-        opt("--port-offset", (args.port_offset != 0).then(|| args.port_offset.to_string().into()));
-        for m in &args.net_map {
-            opt("--net-map", Some(m.to_string().into()));
-        }
-        for (on, flag) in [(args.lenient_connect, "--lenient-connect"), (args.no_fp_traps, "--no-fp-traps"), (args.quiet, "--quiet"), (args.verbose, "--verbose")] {
-            if on {
-                a.push(flag.into());
-            }
-        }
-        plans.push(a);
+        plans.push(child_args(args, given, k, robot, root));
     }
     let mut peer_args: Vec<OsString> = Vec::new();
     if let Some(scene) = &args.scene {
@@ -405,5 +412,42 @@ mod tests {
         assert!(parse_duration("soon").is_err());
         assert!(parse_duration("-1s").is_err());
         assert!(parse_duration("1e300s").unwrap_err().contains("too long"));
+    }
+
+    #[test]
+    fn sim_children_get_every_option_given_and_their_own_per_robot_values() {
+        use clap::{Args as _, FromArgMatches};
+        let argv = [
+            "run", "A/MS", "B/MS", "--sim", "mujoco", "--seed", "7", "--for", "10s", "--speed", "max", "--trace", "t.jsonl", "--control", "c.sock",
+            "--quiet", "--net-map", "10.0.1.2=127.0.0.1", "--net-map", "10.0.1.3:80=127.0.0.1:8080", "--no-fp-traps", "--base", "WLAN",
+            "--watchdog", "2s", "--port-offset", "100", "--design", "ERS-7",
+        ];
+        let given = super::Args::augment_args(clap::Command::new("run")).try_get_matches_from(argv).unwrap();
+        let args = super::Args::from_arg_matches(&given).unwrap();
+        let world = super::check_sim_options(&args).unwrap();
+        let child = |k: usize| -> Vec<String> {
+            super::child_args(&args, &given, k, &world[k], std::path::Path::new("/sdk")).iter().map(|a| a.to_string_lossy().into_owned()).collect()
+        };
+        let (c0, c1) = (child(0), child(1));
+        for c in [&c0, &c1] {
+            for want in [
+                "--for=10s", "--speed=max", "--quiet", "--net-map=10.0.1.2=127.0.0.1", "--net-map=10.0.1.3:80=127.0.0.1:8080", "--no-fp-traps",
+                "--base=WLAN", "--watchdog=2s", "--port-offset=100", "--design=ERS-7", "--sdk", "/sdk",
+            ] {
+                assert!(c.iter().any(|a| a == want), "{want} missing from {c:?}");
+            }
+            // the world's own options stay with the parent
+            assert!(!c.iter().any(|a| a.starts_with("--sim") || a.starts_with("--seed")) && !c[1..].iter().any(|a| a.ends_with("/MS")), "{c:?}");
+        }
+        assert_eq!(c0[0], "A/MS");
+        assert_eq!(c1[0], "B/MS");
+        assert!(c0.windows(2).any(|w| w == ["--trace", "t.jsonl"]) && c1.windows(2).any(|w| w == ["--trace", "t.r1.jsonl"]), "{c0:?} {c1:?}");
+        assert!(c0.windows(2).any(|w| w == ["--control", "c.sock"]) && !c1.iter().any(|a| a.starts_with("--control")), "{c1:?}");
+        assert!(c0.windows(2).any(|w| w == ["--net-bind", "127.0.0.1"]) && c1.windows(2).any(|w| w == ["--net-bind", "127.0.0.2"]));
+        assert!(c1.windows(2).any(|w| w == ["--camera-phase", "8"]), "{c1:?}");
+        // each option once: nothing forwarded twice by the rule and the per-robot code
+        for flag in ["--trace", "--control", "--net-bind", "--camera-phase"] {
+            assert!(c0.iter().filter(|a| a.starts_with(flag)).count() <= 1, "{flag} twice in {c0:?}");
+        }
     }
 }

@@ -2,6 +2,7 @@
 pub mod bench;
 pub mod build;
 pub mod check;
+pub mod child_args;
 pub mod config;
 pub mod debugger;
 pub mod diag;
