@@ -5,7 +5,7 @@ use std::path::Path;
 use std::process::Command;
 
 fn headers() -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../sdk-runtime/cxx")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../sdk-payload/cxx")
 }
 
 /// `name value` lines, from g++ for the headers and from Rust for this crate.

@@ -1,5 +1,5 @@
 //! The subject/observer protocol of object-model 2.8, message for message as the C++
-//! `OSubject`/`OObserver` of `sdk-runtime/cxx/ObjectComm` speak it, so either side may
+//! `OSubject`/`OObserver` of `sdk-payload/cxx/ObjectComm` speak it, so either side may
 //! be C++:
 //!
 //! * connection (2.8.1): the runtime sends `OConnectMessage` to the observer's Connect

@@ -1,7 +1,7 @@
 //! OPEN-R objects written in Rust, run by `cargo openr run` beside C++ objects.
 //!
 //! An object is a `cdylib` whose dynamic symbols are what the runtime loads from any
-//! `.BIN` (see `sdk-runtime/cxx/openr_host.h`): `ObjectEntryTable`, the message builders
+//! `.BIN` (see `sdk-payload/cxx/openr_host.h`): `ObjectEntryTable`, the message builders
 //! `openr_make_reason_message`, `openr_make_connect_message`,
 //! `openr_read_status_message`, and `openr_ocf_name`. The [`object!`] macro emits all of
 //! them for a type implementing [`Object`]; this crate speaks the subject/observer

@@ -88,7 +88,7 @@ fn rust_side() -> Vec<(&'static str, usize)> {
 
 #[test]
 fn message_layouts_match_what_gxx_gives_the_sdk_headers() {
-    let include = Path::new(env!("CARGO_MANIFEST_DIR")).join("../sdk-runtime/include");
+    let include = Path::new(env!("CARGO_MANIFEST_DIR")).join("../sdk-payload/include");
     let tmp = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("openr-layout-{}", std::process::id()));
     std::fs::create_dir_all(&tmp).unwrap();
     std::fs::write(tmp.join("probe.cc"), PROBE).unwrap();

@@ -47,7 +47,5 @@ pub mod vr;
 
 pub use error::{Error, ErrorKind, Result};
 
-pub mod sdk_files {
-    //! Files embedded at build time: `(path relative to its tree, contents)`.
-    include!(concat!(env!("OUT_DIR"), "/sdk_files.rs"));
-}
+/// The embedded SDK-root payload (moved to the `openr-sdk-payload` crate).
+pub use openr_sdk_payload as sdk_files;

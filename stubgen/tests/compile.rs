@@ -3,7 +3,7 @@
 //! * `def.h`/`entry.h` are checked on their own (with a minimal `Types.h`) with
 //!   `-std=c++98 -pedantic-errors`, included from two translation units that are then
 //!   linked together, which would fail on any symbol with external linkage.
-//! * `<Obj>Stub.cc` is syntax-checked against the SDK headers of `sdk-runtime/include`
+//! * `<Obj>Stub.cc` is syntax-checked against the SDK headers of `sdk-payload/include`
 //!   (our drop-in `OPEN_R/include`), with the flags of the compiler wrappers. That test
 //!   skips (with a note) only while `OPENR/stub_macro.h` does not exist yet.
 //! * With `OPENR/core_macro.h` too, a user source using the core macros and the extra
@@ -20,7 +20,7 @@ use common::good;
 use stubgen::StubCfg;
 
 fn include_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../sdk-runtime/include")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../sdk-payload/include")
 }
 
 /// Run g++ in `dir`; Err(command line + output) on failure.

@@ -23,7 +23,7 @@ use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use sdk_runtime::sdk_files;
+use openr_sdk_payload as sdk_files;
 
 use crate::compile::host_tool;
 use crate::error::{Error, ErrorKind};
@@ -410,7 +410,7 @@ fn write_base_trees(open_r: &Path) -> Result<(), Error> {
     // The robot's defaults, the very ones the runtime assumes without the file: a run
     // over the base tree reports the same settings as one without it.
     let mut wlan = String::from("# Wireless LAN settings (KEY=VALUE), read by the runtime's network layer.\r\n");
-    for (k, v) in sdk_runtime::net::config::WLAN_DEFAULTS {
+    for (k, v) in openr_sdk_payload::WLAN_DEFAULTS {
         wlan.push_str(&format!("{k}={v}\r\n"));
     }
     for model in ["MS_ERS7", "MS_ERS200"] {

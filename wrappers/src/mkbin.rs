@@ -335,7 +335,7 @@ mod tests {
 
     #[test]
     fn every_wrapped_call_has_a_wrapper() {
-        let src: String = sdk_runtime::sdk_files::CXX
+        let src: String = openr_sdk_payload::CXX
             .iter()
             .filter(|(p, _)| p.starts_with("mcoopstub/"))
             .map(|(_, b)| String::from_utf8_lossy(b).into_owned())

@@ -202,17 +202,7 @@ pub fn parse_port_map(s: &str) -> HashMap<u16, u16> {
 }
 
 /// The shipped defaults of WLANDFLT.TXT (network-api 2.4).
-pub const WLAN_DEFAULTS: &[(&str, &str)] = &[
-    ("HOSTNAME", "AIBO"),
-    ("ETHER_IP", "10.0.1.100"),
-    ("ETHER_NETMASK", "255.255.255.0"),
-    ("IP_GATEWAY", "10.0.1.1"),
-    ("ESSID", "AIBONET"),
-    ("WEPENABLE", "1"),
-    ("WEPKEY", "AIBO2"),
-    ("APMODE", "2"),
-    ("CHANNEL", "3"),
-];
+pub use openr_sdk_payload::WLAN_DEFAULTS;
 
 /// Parses `KEY=VALUE` lines (`#` comments, blanks ignored).
 pub fn parse_wlan(text: &str) -> BTreeMap<String, String> {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 #
 # include-check.sh - compile checks of the OPEN-R SDK headers in
-# sdk-runtime/include (the future $OPENRSDK_ROOT/OPEN_R/include).
+# sdk-payload/include (the future $OPENRSDK_ROOT/OPEN_R/include).
 #
 #   1. every header compiles alone as a C++ translation unit
 #      (and the kernel-level headers also as C);
@@ -12,7 +12,7 @@
 #      stubs, motion/sensor/network/power/legacy code) compile and link into
 #      shared objects whose entry functions and ObjectEntryTable are exported.
 #
-# Exits non-zero on any failure. Usage: sdk-runtime/include-check.sh [-v]
+# Exits non-zero on any failure. Usage: sdk-payload/include-check.sh [-v]
 #
 set -u
 
