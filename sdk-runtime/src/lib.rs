@@ -36,7 +36,8 @@ pub mod observe;
 pub mod peer;
 pub mod power;
 pub mod robot_api;
-pub mod robot;
+/// The virtual robot (the `openr-robot` crate).
+pub use openr_robot as robot;
 pub mod runtime;
 pub mod sched;
 mod scratch;

@@ -315,8 +315,8 @@ impl Body {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::robot::model::{oradians, Leg};
-    use crate::robot::vectors::Led3Value;
+    use crate::model::{oradians, Leg};
+    use crate::vectors::Led3Value;
 
     fn body() -> Body {
         Body::new(RobotModel::new(Design::Ers7))

@@ -188,7 +188,7 @@ pub fn color_frequency(tag: &[u8], chan: u32) -> u8 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::robot::vectors::rd_u32;
+    use crate::vectors::rd_u32;
 
     #[test]
     fn ers7_layer_sizes() {

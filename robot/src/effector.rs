@@ -388,8 +388,8 @@ impl Effector {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::robot::model::{oradians, Design, Leg, Part};
-    use crate::robot::vectors::*;
+    use crate::model::{oradians, Design, Leg, Part};
+    use crate::vectors::*;
 
     fn model() -> RobotModel {
         RobotModel::new(Design::Ers7)

@@ -1,8 +1,8 @@
 //! Colour detection tables (`SetCdtVectorData`, robot-api 6.7): parsing a CDT vector, and
 //! the lookup that classifies a pixel into the channels whose table row it falls in.
-use crate::robot::model::{Design, PrimitiveId};
-use crate::robot::status::*;
-use crate::robot::vectors::{odata, rd_u32, VectorHeader, HEADER_SIZE};
+use crate::model::{Design, PrimitiveId};
+use crate::status::*;
+use crate::vectors::{odata, rd_u32, VectorHeader, HEADER_SIZE};
 
 pub const CDT_CHANNELS: usize = 8;
 pub const CDT_SEGMENTS: usize = 32;

@@ -2,12 +2,12 @@
 
 use std::time::Instant;
 
-use crate::robot::camera::*;
-use crate::robot::image::{band, color_frequency, field_counter, ImageLayout};
-use crate::robot::model::{POSTURE_PARTS, POSTURE_STAND};
-use crate::robot::render::{Ball, PinholeCamera};
-use crate::robot::vectors::rd_u32;
-use crate::robot::*;
+use crate::camera::*;
+use crate::image::{band, color_frequency, field_counter, ImageLayout};
+use crate::model::{POSTURE_PARTS, POSTURE_STAND};
+use crate::render::{Ball, PinholeCamera};
+use crate::vectors::rd_u32;
+use crate::*;
 
 fn standing() -> VirtualRobot {
     let mut r = VirtualRobot::new(Design::Ers7);
@@ -481,8 +481,8 @@ fn camera_parameters_change_the_image() {
 /// reference `synthesize` must match byte for byte. CDT bits follow the robot-api 6.7
 /// rule directly from the loaded tables (not through `CdtLut`'s lookup tables).
 mod reference {
-    use crate::robot::camera::{CdtLut, CDT_CHANNELS};
-    use crate::robot::image::{ImageLayout, LayerLayout, TAG_SIZE};
+    use crate::camera::{CdtLut, CDT_CHANNELS};
+    use crate::image::{ImageLayout, LayerLayout, TAG_SIZE};
 
     const KY: [i32; 3] = [19_661, 38_550, 7_325];
 

@@ -307,7 +307,7 @@ impl SensorSynth {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::robot::model::{Design, RobotModel, POSTURE_PARTS, POSTURE_SIT, POSTURE_SLEEP, POSTURE_STAND};
+    use crate::model::{Design, RobotModel, POSTURE_PARTS, POSTURE_SIT, POSTURE_SLEEP, POSTURE_STAND};
 
     fn body(posture: &[f64; 18]) -> Body {
         let mut b = Body::new(RobotModel::new(Design::Ers7));

@@ -335,7 +335,7 @@ fn shade(rgb: [u8; 3], k: f64) -> [u8; 3] {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::robot::model::{RobotModel, POSTURE_PARTS, POSTURE_SLEEP, POSTURE_STAND};
+    use crate::model::{RobotModel, POSTURE_PARTS, POSTURE_SLEEP, POSTURE_STAND};
 
     fn body(posture: &[f64; 18]) -> Body {
         let mut b = Body::new(RobotModel::new(Design::Ers7));

@@ -1,6 +1,6 @@
 //! Synthesis of the four `OFbkImageVectorData` layers (H, M, L and the CDT layer C) from a
 //! sensor-resolution RGB image, and their reconstruction to RGB (robot-api 6.6).
-use crate::robot::image::{ImageLayout, LayerLayout, TAG_SIZE};
+use crate::image::{ImageLayout, LayerLayout, TAG_SIZE};
 use super::cdt::{CdtLut, CDT_CHANNELS};
 use super::colour::{clip, luma, ycrcb_to_rgb};
 use super::source::RgbImage;
