@@ -20,6 +20,7 @@ pub struct Shell {
 const GREEN: &str = "\x1b[1;32m";
 const RED: &str = "\x1b[1;31m";
 const YELLOW: &str = "\x1b[1;33m";
+const CYAN: &str = "\x1b[1;36m";
 const RESET: &str = "\x1b[0m";
 
 impl Shell {
@@ -82,9 +83,40 @@ impl Shell {
         }
     }
 
+    /// The runtime's messages (`sdk_runtime::runtime::Report`) in this shell's style.
+    pub fn reporter(&self) -> std::sync::Arc<dyn sdk_runtime::runtime::Report> {
+        std::sync::Arc::new(RuntimeReport { color: self.color })
+    }
+
     /// A result line on stdout (paths, JSON).
     pub fn out(&mut self, line: &str) {
         let _ = writeln!(std::io::stdout(), "{line}");
+    }
+}
+
+/// The shell's colours for messages from the runtime's threads (it is `Send`; the
+/// `Shell` is not).
+struct RuntimeReport {
+    color: bool,
+}
+
+impl RuntimeReport {
+    fn line(&self, colour: &str, label: &str, msg: &str) {
+        let label = if self.color { format!("{colour}{label}{RESET}") } else { label.to_string() };
+        // One write per line: objects' threads report concurrently.
+        let _ = std::io::stderr().write_all(format!("{label} {msg}\n").as_bytes());
+    }
+}
+
+impl sdk_runtime::runtime::Report for RuntimeReport {
+    fn warn(&self, msg: &str) {
+        self.line(YELLOW, "warning:", msg);
+    }
+    fn error(&self, msg: &str) {
+        self.line(RED, "error:", msg);
+    }
+    fn note(&self, msg: &str) {
+        self.line(CYAN, &format!("{:>12}", "note:"), msg);
     }
 }
 

@@ -145,7 +145,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         design_data: Mutex::new(Vec::new()),
         power: Power::new(crate::power::initial_state(clock.calendar().1)),
         clock,
-        diag: opts.diag,
+        diag: opts.diag.clone(),
         shutdown_requested: AtomicBool::new(false),
         fatal: std::sync::atomic::AtomicU32::new(crate::runtime::NO_FATAL),
         booting: AtomicBool::new(true),

@@ -40,7 +40,11 @@ pub fn panicked(function: &str, payload: Box<dyn std::any::Any + Send>) {
         .or_else(|| payload.downcast_ref::<String>().cloned())
         .unwrap_or_else(|| "a panic without a message".into());
     let who = object::current().map_or_else(|| "a thread that is not an object's".to_string(), |o| format!("object `{}`", o.name()));
-    eprintln!("error: internal error in cargo-openr: the runtime's `{function}` (called by {who}) panicked: {what}");
+    let msg = format!("internal error in cargo-openr: the runtime's `{function}` (called by {who}) panicked: {what}");
+    match rt() {
+        Some(rt) => rt.diag.error(&msg),
+        None => eprintln!("error: {msg}"),
+    }
     INTERNAL_ERRORS.fetch_add(1, Ordering::AcqRel);
 }
 
@@ -301,7 +305,7 @@ pub(crate) fn fatal(kind: u32) {
         _ => "an undefined OFatal value",
     };
     let who = object::current().map_or_else(|| "?".to_string(), |o| o.name().to_string());
-    eprintln!("error: object `{who}` called OPENR::Fatal({warning}); the robot powers off (no DoStop, no DoDestroy)");
+    rt.diag.error(&format!("object `{who}` called OPENR::Fatal({warning}); the robot powers off (no DoStop, no DoDestroy)"));
     rt.fatal.store(kind, Ordering::Release);
     rt.request_shutdown();
     loop {

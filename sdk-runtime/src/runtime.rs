@@ -26,22 +26,72 @@ pub struct Service {
     pub selector: u32,
 }
 
-/// How runtime diagnostics are shown (stderr).
-#[derive(Debug, Clone, Copy, Default)]
+/// Where the runtime's messages go. The CLI passes its shell's (cargo's layout and
+/// colours); without one, plain lines go to stderr.
+pub trait Report: Send + Sync {
+    fn warn(&self, msg: &str);
+    fn error(&self, msg: &str);
+    fn note(&self, msg: &str);
+}
+
+/// `warning: …`, `error: …`, `       note: …` on stderr, no colour.
+pub struct PlainStderr;
+
+impl Report for PlainStderr {
+    fn warn(&self, msg: &str) {
+        eprintln!("warning: {msg}");
+    }
+    fn error(&self, msg: &str) {
+        eprintln!("error: {msg}");
+    }
+    fn note(&self, msg: &str) {
+        eprintln!("{:>12} {msg}", "note:");
+    }
+}
+
+/// How runtime diagnostics are shown: what `--quiet` / `--verbose` let through, and
+/// where they go.
+#[derive(Clone)]
 pub struct Diag {
     pub quiet: bool,
     pub verbose: bool,
+    pub report: Arc<dyn Report>,
+}
+
+impl Default for Diag {
+    fn default() -> Diag {
+        Diag::new(false, false)
+    }
+}
+
+impl std::fmt::Debug for Diag {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Diag").field("quiet", &self.quiet).field("verbose", &self.verbose).finish_non_exhaustive()
+    }
 }
 
 impl Diag {
+    pub fn new(quiet: bool, verbose: bool) -> Diag {
+        Diag { quiet, verbose, report: Arc::new(PlainStderr) }
+    }
+
+    /// The same settings, reported through `report`.
+    pub fn with_report(self, report: Arc<dyn Report>) -> Diag {
+        Diag { report, ..self }
+    }
+
     pub fn warn(&self, msg: &str) {
         if !self.quiet {
-            eprintln!("warning: {msg}");
+            self.report.warn(msg);
         }
+    }
+    /// Always shown (`--quiet` too).
+    pub fn error(&self, msg: &str) {
+        self.report.error(msg);
     }
     pub fn info(&self, msg: &str) {
         if self.verbose {
-            eprintln!("{:>12} {msg}", "note:");
+            self.report.note(msg);
         }
     }
 }

@@ -210,7 +210,7 @@ pub fn exec(args: Args, given: &clap::ArgMatches, shell: &mut Shell) -> anyhow::
         ms_dir: ms_dir.clone(),
         design: cfg.design.value,
         run_for: args.run_for,
-        diag: Diag { quiet: args.quiet, verbose: args.verbose },
+        diag: Diag::new(args.quiet, args.verbose).with_report(shell.reporter()),
         lenient_connect: args.lenient_connect,
         fp_traps: !args.no_fp_traps,
         watchdog: args.watchdog,

@@ -106,3 +106,12 @@ fn openr_fatal_powers_the_robot_off_without_stop_and_fails_the_run() {
     assert!(out.stdout.contains("Params : 3 parameters loaded") && out.stdout.contains("Params : DoStop"), "{}", out.stdout);
     assert_eq!(out.code, Some(0), "{}", out.stderr);
 }
+
+#[test]
+fn the_runtime_reports_through_the_shell_in_its_colours() {
+    let b = build("fatal");
+    let out = run_ms(&b.ms(), &["--speed", "max", "--for", "5s", "--color", "always"]);
+    assert!(out.stderr.contains("\x1b[1;31merror:\x1b[0m object `params` called OPENR::Fatal("), "{:?}", out.stderr);
+    let plain = run_ms(&b.ms(), &["--speed", "max", "--for", "5s", "--color", "never"]);
+    assert!(plain.stderr.contains("\nerror: object `params` called OPENR::Fatal(") && !plain.stderr.contains('\x1b'), "{:?}", plain.stderr);
+}
