@@ -260,7 +260,9 @@ pub fn write_outputs(cfg: &StubCfg, dir: &Path) -> Result<Vec<PathBuf>, Error> {
     let files = generate(cfg)?;
     let targets: Vec<(PathBuf, PathBuf)> = files
         .iter()
-        .map(|(name, _)| (dir.join(name), dir.join(format!(".{name}.stubgen2-tmp"))))
+        .enumerate()
+        // Short temporary names: any ObjectName whose output name fits fits here too.
+        .map(|(i, (name, _))| (dir.join(name), dir.join(format!(".stubgen2-tmp.{i}"))))
         .collect();
     let cleanup = |upto: usize| {
         for (_, tmp) in &targets[..upto] {

@@ -86,6 +86,13 @@ pub fn parse_str(name: &str, text: &str) -> Result<StubCfg, Error> {
 
 const BLANKS: [char; 2] = [' ', '\t'];
 
+/// The longest file name Linux file systems take (`NAME_MAX`).
+const NAME_MAX: usize = 255;
+/// `<ObjectName>Stub.cc` must fit in a file name.
+const MAX_OBJECT_NAME: usize = NAME_MAX - "Stub.cc".len();
+/// `oserviceNAME_MAX` of OPENR.h: the name buffers of the object model end there.
+const MAX_SERVICE_NAME: usize = 127;
+
 #[derive(Clone, Copy)]
 enum Keyword {
     ObjectName,
@@ -220,6 +227,18 @@ pub(crate) fn parse_sources(sources: &[(PathBuf, Vec<u8>)]) -> Result<StubCfg, E
                 return Err(loc.err(
                     ErrorKind::InvalidObjectName,
                     format!("ObjectName '{name}' is not a valid C++ class name"),
+                ));
+            }
+            if name.len() > MAX_OBJECT_NAME {
+                return Err(loc.err(
+                    ErrorKind::InvalidObjectName,
+                    format!(
+                        "ObjectName '{}…' is {} characters long: the file <ObjectName>Stub.cc \
+                         stubgen2 writes would pass the file-name limit of {NAME_MAX} bytes \
+                         (at most {MAX_OBJECT_NAME} characters)",
+                        &name[..16],
+                        name.len()
+                    ),
                 ));
             }
             name
@@ -403,6 +422,17 @@ fn parse_service(value: &str, loc: &Loc<'_>) -> Result<Option<Service>, Error> {
         return Err(loc.err(
             ErrorKind::InvalidServiceName,
             format!("service name \"{name}\" contains {c:?}; only printable ASCII without '\"' and '\\' is allowed"),
+        ));
+    }
+    if name.len() > MAX_SERVICE_NAME {
+        return Err(loc.err(
+            ErrorKind::InvalidServiceName,
+            format!(
+                "service name \"{}…\" is {} characters long; OPEN-R service names have at most \
+                 {MAX_SERVICE_NAME} (oserviceNAME_MAX)",
+                &name[..32],
+                name.len()
+            ),
         ));
     }
     let sub_name = parts[1];

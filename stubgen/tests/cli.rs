@@ -198,3 +198,54 @@ fn a_repeated_subname_is_a_warning_with_file_and_line() {
         "{def}"
     );
 }
+
+/// `CFG` with ObjectName and the first subject's SubName replaced.
+fn cfg_named(object: &str, sub: &str) -> String {
+    CFG.replace("ObjectName : SampleSubject", &format!("ObjectName : {object}"))
+        .replace("SampleSubject.SendString.", &format!("SampleSubject.{sub}."))
+}
+
+#[test]
+fn an_object_name_too_long_for_a_file_name_is_an_error_at_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let long = "A".repeat(300);
+    std::fs::write(dir.path().join("stub.cfg"), format!("# x\n{}", cfg_named(&long, "S"))).unwrap();
+    let (code, out, err) = run(&["stub.cfg"], dir.path());
+    assert_eq!((code, out.as_str()), (1, ""));
+    assert_eq!(
+        err,
+        "stubgen2: stub.cfg:2: ObjectName 'AAAAAAAAAAAAAAAA…' is 300 characters long: the file \
+         <ObjectName>Stub.cc stubgen2 writes would pass the file-name limit of 255 bytes (at most 248 characters)\n"
+    );
+    assert_eq!(files_in(dir.path()), ["stub.cfg"]);
+    // The longest name that fits is written (and its temporary files fit too).
+    let longest = "B".repeat(248);
+    std::fs::write(dir.path().join("stub.cfg"), cfg_named(&longest, "S")).unwrap();
+    let (code, _, err) = run(&["stub.cfg"], dir.path());
+    assert_eq!(code, 0, "{err}");
+    assert!(files_in(dir.path()).contains(&format!("{longest}Stub.cc")));
+    let one_more = "C".repeat(249);
+    std::fs::write(dir.path().join("stub.cfg"), cfg_named(&one_more, "S")).unwrap();
+    let (code, _, err) = run(&["stub.cfg"], dir.path());
+    assert_eq!(code, 1);
+    assert!(err.contains("is 249 characters long"), "{err}");
+}
+
+#[test]
+fn a_service_name_past_oservice_name_max_is_an_error_at_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    // "SampleSubject." + sub + ".char.S" is 127 characters: accepted; 128 is not.
+    let fits = "S".repeat(127 - "SampleSubject..char.S".len());
+    std::fs::write(dir.path().join("stub.cfg"), cfg_named("SampleSubject", &fits)).unwrap();
+    let (code, _, err) = run(&["stub.cfg"], dir.path());
+    assert_eq!(code, 0, "{err}");
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("stub.cfg"), cfg_named("SampleSubject", &format!("{fits}T"))).unwrap();
+    let (code, out, err) = run(&["stub.cfg"], dir.path());
+    assert_eq!((code, out.as_str()), (1, ""));
+    assert!(
+        err.starts_with("stubgen2: stub.cfg:4: service name \"SampleSubject.SSSSSSSSSSSSSSSSSS…\" is 128 characters long; OPEN-R service names have at most 127 (oserviceNAME_MAX)\n"),
+        "{err}"
+    );
+    assert_eq!(files_in(dir.path()), ["stub.cfg"]);
+}
