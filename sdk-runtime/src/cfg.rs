@@ -1,7 +1,7 @@
 //! The Memory Stick configuration files of `/MS/OPEN-R/MW/CONF` (object-model 1.4):
 //! CRLF or LF, `#` comment lines, blank lines, fields separated by blanks or tabs, and
 //! robot-design sections (`[ERS-7]`) whose lines apply only to that design.
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
 use crate::ms::MsDir;
@@ -67,20 +67,28 @@ pub fn object_cfg(ms: &MsDir, design: &str) -> Result<(PathBuf, Vec<ObjectEntry>
         Error::config(&expected, None, format!("not found: `{}` is not a Memory Stick tree (expected OPEN-R/MW/CONF/OBJECT.CFG listing the objects to load)", ms.root().display()))
     })?;
     let mut out = Vec::new();
-    for line in lines_for_design(&cfg.text, design) {
-        let ms_path = &line.fields[0];
-        if line.fields.len() > 1 {
-            return Err(Error::config(&cfg.path, Some(line.number), format!("expected one path per line (/MS/OPEN-R/MW/OBJS/XXXXXXXX.BIN), found `{}`", line.fields.join(" "))));
-        }
-        let host_path = ms.existing(ms_path).filter(|p| p.is_file()).ok_or_else(|| {
-            Error::config(&cfg.path, Some(line.number), format!("object `{ms_path}` not found on the Memory Stick (is it built and installed?)"))
+    for (line, ms_path) in parse_object_cfg(&cfg.path, &cfg.text, design)? {
+        let host_path = ms.existing(&ms_path).filter(|p| p.is_file()).ok_or_else(|| {
+            Error::config(&cfg.path, Some(line), format!("object `{ms_path}` not found on the Memory Stick (is it built and installed?)"))
         })?;
-        out.push(ObjectEntry { line: line.number, ms_path: ms_path.clone(), host_path });
-    }
-    if out.is_empty() {
-        return Err(Error::config(&cfg.path, None, format!("lists no object for robot design {design}")));
+        out.push(ObjectEntry { line, ms_path, host_path });
     }
     Ok((cfg.path, out))
+}
+
+/// The `(line, /MS path)` entries of an OBJECT.CFG text (`path` names it in errors).
+pub fn parse_object_cfg(path: &Path, text: &str, design: &str) -> Result<Vec<(usize, String)>> {
+    let mut out = Vec::new();
+    for line in lines_for_design(text, design) {
+        if line.fields.len() > 1 {
+            return Err(Error::config(path, Some(line.number), format!("expected one path per line (/MS/OPEN-R/MW/OBJS/XXXXXXXX.BIN), found `{}`", line.fields.join(" "))));
+        }
+        out.push((line.number, line.fields[0].clone()));
+    }
+    if out.is_empty() {
+        return Err(Error::config(path, None, format!("lists no object for robot design {design}")));
+    }
+    Ok(out)
 }
 
 /// A CONNECT.CFG line: subject service name, observer service name.
@@ -96,10 +104,16 @@ pub fn connect_cfg(ms: &MsDir, design: &str) -> Result<(PathBuf, Vec<Connection>
     let Some(cfg) = CfgFile::find(ms, "CONNECT.CFG")? else {
         return Ok((ms.root().join("OPEN-R/MW/CONF/CONNECT.CFG"), Vec::new()));
     };
+    let out = parse_connect_cfg(&cfg.path, &cfg.text, design)?;
+    Ok((cfg.path, out))
+}
+
+/// The connections of a CONNECT.CFG text (`path` names it in errors).
+pub fn parse_connect_cfg(path: &Path, text: &str, design: &str) -> Result<Vec<Connection>> {
     let mut out: Vec<Connection> = Vec::new();
-    for line in lines_for_design(&cfg.text, design) {
+    for line in lines_for_design(text, design) {
         let [subject, observer] = &line.fields[..] else {
-            return Err(Error::config(&cfg.path, Some(line.number), format!(
+            return Err(Error::config(path, Some(line.number), format!(
                 "expected `<subject service> <observer service>`, found {} field(s): `{}`",
                 line.fields.len(), line.fields.join(" ")
             )));
@@ -107,32 +121,37 @@ pub fn connect_cfg(ms: &MsDir, design: &str) -> Result<(PathBuf, Vec<Connection>
         for (name, kind) in [(subject, "S"), (observer, "O")] {
             if name.rsplit('.').next() != Some(kind) || name.split('.').count() != 4 {
                 let what = if kind == "S" { "subject" } else { "observer" };
-                return Err(Error::config(&cfg.path, Some(line.number), format!(
+                return Err(Error::config(path, Some(line.number), format!(
                     "`{name}` is not a {what} service name (expected Object.Sub.Data.{kind}; the subject comes first)"
                 )));
             }
         }
         if let Some(first) = out.iter().find(|c| &c.subject == subject && &c.observer == observer) {
-            return Err(Error::config(&cfg.path, Some(line.number), format!(
+            return Err(Error::config(path, Some(line.number), format!(
                 "duplicate connection `{subject} {observer}` (first on line {})", first.line
             )));
         }
         out.push(Connection { line: line.number, subject: subject.clone(), observer: observer.clone() });
     }
-    Ok((cfg.path, out))
+    Ok(out)
 }
 
 /// DESIGNDB.CFG: `KEYWORD /MS/path` lines of the current design.
 pub fn design_db(ms: &MsDir, design: &str) -> Result<Vec<(String, String)>> {
     let Some(cfg) = CfgFile::find(ms, "DESIGNDB.CFG")? else { return Ok(Vec::new()) };
+    parse_design_db(&cfg.path, &cfg.text, design)
+}
+
+/// The `(KEYWORD, path)` lines of a DESIGNDB.CFG text (`path` names it in errors).
+pub fn parse_design_db(path: &Path, text: &str, design: &str) -> Result<Vec<(String, String)>> {
     let mut out = Vec::new();
-    for line in lines_for_design(&cfg.text, design) {
-        let [key, path] = &line.fields[..] else {
-            return Err(Error::config(&cfg.path, Some(line.number), format!(
+    for line in lines_for_design(text, design) {
+        let [key, value] = &line.fields[..] else {
+            return Err(Error::config(path, Some(line.number), format!(
                 "expected `<KEYWORD> <absolute path>`, found `{}`", line.fields.join(" ")
             )));
         };
-        out.push((key.clone(), path.clone()));
+        out.push((key.clone(), value.clone()));
     }
     Ok(out)
 }
