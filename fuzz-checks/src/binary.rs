@@ -1,0 +1,102 @@
+//! The byte protocols and images: the robot peer protocol, control-socket lines and
+//! `.BIN` (ELF) images.
+use std::io::BufReader;
+use std::path::Path;
+
+use sdk_runtime::control::{self, Command, Input};
+use sdk_runtime::peer::wire;
+
+/// A stream of robot-protocol messages as a peer sends them: each message is read,
+/// refused or taken; what was taken prints back to the same bytes.
+pub fn wire(data: &[u8]) -> bool {
+    let mut rest = data;
+    let mut taken = false;
+    loop {
+        let before = rest;
+        match wire::read_message(&mut rest) {
+            Ok(None) => {
+                assert!(before.is_empty());
+                return taken;
+            }
+            Err(_) => return false, // truncated: the connection ends
+            Ok(Some(Err(wire::Refusal(code, message)))) => {
+                assert!((wire::E_BAD_MAGIC..=wire::E_OVERFLOW).contains(&code) && !message.is_empty());
+                return false; // the runtime answers ERROR and drops the peer
+            }
+            Ok(Some(Ok((h, payload)))) => {
+                assert_eq!(h.length as usize, payload.len());
+                let used = before.len() - rest.len();
+                assert_eq!(wire::message(h.kind, h.frame, &payload), before[..used], "message prints back");
+                taken |= payload_round_trip(h.kind, &payload);
+            }
+        }
+    }
+}
+
+/// True when the payload was one the runtime takes (HELLO, READINGS) and it parsed.
+fn payload_round_trip(kind: u16, p: &[u8]) -> bool {
+    match kind {
+        wire::HELLO => {
+            if let Ok(h) = wire::parse_hello(p) {
+                assert_eq!(wire::parse_hello(&wire::hello(h.roles, h.flags, &h.name)), Ok(h));
+                return true;
+            }
+            false
+        }
+        wire::READINGS => {
+            if let Ok(r) = wire::parse_readings(p) {
+                assert_eq!(wire::readings(&r), p, "READINGS prints back");
+                return true;
+            }
+            false
+        }
+        _ => {
+            // Every getter of the reader fails instead of reading past the end.
+            let mut i = wire::In::new(p);
+            while !i.is_empty() {
+                if i.str().is_err() && i.u32().is_err() && i.u8().is_err() {
+                    break;
+                }
+            }
+            false
+        }
+    }
+}
+
+/// What a control-socket client sends: lines of at most 1024 bytes, each parsed; a
+/// command prints back to a line that parses to it.
+pub fn control(data: &[u8]) -> bool {
+    let mut taken = false;
+    let mut input = BufReader::with_capacity(64, data);
+    for _ in 0..=data.len() {
+        match control::read_line(&mut input) {
+            Input::End | Input::TooLong => return taken,
+            Input::NotUtf8(at) => assert!(at <= 1024),
+            Input::Line(text) => {
+                assert!(text.len() <= 1025 && text.matches('\n').count() <= 1 && (text.ends_with('\n') || !text.contains('\n')));
+                match text.trim().parse::<Command>() {
+                    Ok(c) => {
+                        assert_eq!(c.to_string().parse::<Command>(), Ok(c));
+                        taken = true;
+                    }
+                    Err(e) => assert!(!e.is_empty()),
+                }
+            }
+        }
+    }
+    panic!("read_line did not consume its input");
+}
+
+/// A `.BIN` as `run` and `check` read it: gunzipped when gzip, then validated before
+/// `dlopen` would see it.
+pub fn elf(data: &[u8]) -> bool {
+    let Ok(image) = sdk_runtime::loader::gunzip_if_gzip(data.to_vec()) else { return false };
+    let _ = sdk_runtime::elf_check::interpreter(&image);
+    match sdk_runtime::elf_check::validate(Path::new("X.BIN"), &image) {
+        Ok(()) => true,
+        Err(e) => {
+            assert!(e.to_string().starts_with("X.BIN: damaged or foreign object file: "), "{e}");
+            false
+        }
+    }
+}

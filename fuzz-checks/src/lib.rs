@@ -1,0 +1,122 @@
+//! The properties each parser of outside input must keep, one function per fuzz target:
+//! no panic, errors that name a line where the format has lines, and parse → print →
+//! parse round trips where the data can be printed back. `fuzz/` drives them with
+//! libFuzzer (nightly); `tests/bounded.rs` drives them on stable with a few thousand
+//! deterministic inputs each ([`gen`]), seeded from the repository's own files.
+use std::path::{Path, PathBuf};
+
+mod binary;
+pub mod gen;
+mod text;
+
+pub use binary::{control, elf, wire};
+pub use text::{hostgw, ms_cfg, ocf, openr_toml, stub_cfg, wlan};
+
+/// A fuzz target: its name (as in `fuzz/fuzz_targets/<name>.rs`) and its check.
+pub struct Target {
+    pub name: &'static str,
+    /// Panics when a property fails; true when the input was accepted.
+    pub check: fn(&[u8]) -> bool,
+    /// Words the mutator inserts (keywords, separators of the format).
+    pub dict: &'static [&'static [u8]],
+}
+
+pub const TARGETS: &[Target] = &[
+    Target { name: "ms_cfg", check: ms_cfg, dict: &[b"[ERS-7]", b"[ERS-210]", b"/MS/OPEN-R/MW/OBJS/", b".BIN", b".S ", b".O", b"\r\n", b"# "] },
+    Target { name: "wlan", check: wlan, dict: &[b"ESSID=", b"WEPENABLE=", b"HOSTNAME=", b"=", b"\r\n", b"# "] },
+    Target { name: "stub_cfg", check: stub_cfg, dict: &[b"ObjectName : ", b"NumOfOSubject : ", b"NumOfOObserver : ", b"Service : \"", b".char.S\"", b".char.O\"", b", null", b"()", b"Extra : ", b"\r\n"] },
+    Target { name: "ocf", check: ocf, dict: &[b"object ", b" cache", b" nocache", b" tlb", b" notlb", b" user", b" kernel", b"K ", b"18446744073709551615", b"# "] },
+    Target { name: "hostgw", check: hostgw, dict: &[b"!ROBOT_PROXY ", b"TCPGateway.Proxy.AperiosMessage.P ", b".S ", b".O ", b" 10.0.1.100", b" dmax=8", b"65535", b"65536", b"\r\n", b"# "] },
+    Target { name: "openr_toml", check: openr_toml, dict: &[b"sdk = ", b"design = \"ERS-210\"", b"speed = ", b"cxxflags = ", b"ldflags = ", b"base = ", b"\"", b"\\\"", b"\\\\", b"# "] },
+    Target { name: "wire", check: wire, dict: &[b"ORP1\x01\x00", b"\x00\x00\x40\x00", b"\xff\xff"] },
+    Target { name: "control", check: control, dict: &[b"status", b"pause", b"resume", b"step ", b"speed ", b"max", b"shutdown", b"1e-300", b"1000000", b"\n"] },
+    Target { name: "elf", check: elf, dict: &[b"\x7fELF\x02\x01\x01", b"\x3e\x00", b"\x03\x00", b"\x38\x00", b"\x1f\x8b\x08"] },
+];
+
+/// The repository root (this crate sits in it).
+pub fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
+}
+
+/// The seed inputs of `target`: the repository's files of that format, or (for the
+/// formats no file of the repository holds) messages the project's own writers build.
+pub fn seeds(target: &str) -> Vec<Vec<u8>> {
+    let wanted = |name: &str| -> bool {
+        let upper = name.to_ascii_uppercase();
+        match target {
+            "ms_cfg" => ["OBJECT.CFG", "CONNECT.CFG", "DESIGNDB.CFG"].contains(&upper.as_str()),
+            "wlan" => upper.starts_with("WLAN") && upper.ends_with(".TXT"),
+            "stub_cfg" => upper.ends_with(".CFG") && !upper.ends_with("GW.CFG") && !["OBJECT.CFG", "CONNECT.CFG", "DESIGNDB.CFG"].contains(&upper.as_str()),
+            "ocf" => upper.ends_with(".OCF"),
+            _ => false,
+        }
+    };
+    let mut out = Vec::new();
+    walk(&repo(), &mut |p| {
+        if p.file_name().and_then(|n| n.to_str()).is_some_and(wanted) {
+            if let Ok(b) = std::fs::read(p) {
+                out.push(b);
+            }
+        }
+    });
+    out.extend(built_seeds(target));
+    out.sort();
+    out.dedup();
+    out
+}
+
+fn walk(dir: &Path, f: &mut dyn FnMut(&Path)) {
+    let Ok(entries) = std::fs::read_dir(dir) else { return };
+    let mut entries: Vec<PathBuf> = entries.flatten().map(|e| e.path()).collect();
+    entries.sort();
+    for p in entries {
+        let name = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        // Skips build output and the libFuzzer corpora (fuzz/corpus grows by thousands).
+        if p.is_symlink() || name.starts_with('.') || ["target", "corpus", "artifacts"].contains(&name) {
+            continue;
+        }
+        if p.is_dir() {
+            walk(&p, f);
+        } else {
+            f(&p);
+        }
+    }
+}
+
+fn built_seeds(target: &str) -> Vec<Vec<u8>> {
+    use sdk_runtime::peer::wire;
+    let text = |v: &[&str]| v.iter().map(|s| s.as_bytes().to_vec()).collect();
+    match target {
+        "wlan" => text(&["# wireless\nESSID=AIBONET\r\nWEPENABLE=0\nIPADDRESS = 10.0.1.100 # robot\n=x\nbare line\n"]),
+        "hostgw" => text(&[
+            "\r\n# host\r\n! ROBOT_PROXY 59001 10.0.1.100\r\nTCPGateway.Cam.Frame.S\t59002  10.0.1.100\r\nCore.Stdin.Expr.O 1094 dmax=8 dmin=1\r\n",
+            "TCPGateway.Proxy.AperiosMessage.P 59001\nSampleSubject.SendString.char.S 59100\n",
+        ]),
+        "openr_toml" => text(&[
+            "# c\nsdk = \"../sdk\" # root\n\ndesign = \"ERS-210\"\nspeed = 4\nbase = \"WLAN\"\n",
+            "speed = \"max\"\ncxxflags = \"-O2 -DX=\\\"a b\\\"\"\nldflags = \"-lm\"\n",
+        ]),
+        "control" => text(&["status\npause\nstep\nstep 3\nspeed 2.5\nspeed max\nresume\nshutdown\n", "speed 1e-300\r\nstep 0\n\n  status  \n"]),
+        "wire" => {
+            let r = sdk_runtime::robot::Readings { joints: vec![(0x100, -5), (0x101, 7)], sensors: vec![(0x130, 1)] };
+            let hello = wire::message(wire::HELLO, 0, &wire::hello(wire::ROLE_ALL, wire::FLAG_CLOCK, "sim"));
+            let readings = wire::message(wire::READINGS, 3, &wire::readings(&r));
+            let clock = wire::message(wire::CLOCK, 4, &1u32.to_le_bytes());
+            let bye = wire::message(wire::BYE, 5, &[]);
+            vec![[hello.clone(), readings.clone(), clock, bye].concat(), hello, readings]
+        }
+        "elf" => {
+            // Shared objects of the system (the tests of elf_check use them too), plain
+            // and gzipped as mkbin writes a .BIN.
+            let mut v: Vec<Vec<u8>> = ["/lib/x86_64-linux-gnu/libdl.so.2", "/usr/lib/x86_64-linux-gnu/libdl.so.2"].iter().filter_map(|p| std::fs::read(p).ok()).take(1).collect();
+            if let Some(so) = v.first().cloned() {
+                use std::io::Write;
+                let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::default());
+                gz.write_all(&so).unwrap();
+                v.push(gz.finish().unwrap());
+            }
+            v
+        }
+        _ => Vec::new(),
+    }
+}
