@@ -205,14 +205,33 @@ pub fn hostgw(data: &[u8]) -> bool {
     !gw.is_empty()
 }
 
+/// A TOML basic string: quoted; `\`, `"` and control characters escaped.
+fn toml_string(v: &str) -> String {
+    let mut s = String::from("\"");
+    for c in v.chars() {
+        match c {
+            '"' | '\\' => s.extend(['\\', c]),
+            c if c.is_control() => s += &format!("\\u{:04X}", c as u32),
+            c => s.push(c),
+        }
+    }
+    s + "\""
+}
+
 /// `openr.toml` (the TOML subset of cargo-openr's project file).
 pub fn openr_toml(data: &[u8]) -> bool {
     let text = String::from_utf8_lossy(data);
     let path = Path::new("openr.toml");
+    // Any one-line value can be written: the first line, as a flag string.
+    let value = text.lines().next().unwrap_or("").trim();
+    let line = format!("cxxflags = {} # a comment\n", toml_string(value));
+    let got = openr_config::parse_project_file(path, &line).unwrap_or_else(|e| panic!("{line}: {e}"));
+    assert_eq!(got.cxxflags.map(|(v, _)| v).as_deref(), Some(value), "{line}");
     let pf = match openr_config::parse_project_file(path, &text) {
         Ok(p) => p,
         Err(e) => {
-            assert_message_line(&e.to_string(), "openr.toml", text.lines().count());
+            // An error at the end of the file may name the line after a final line end.
+            assert_message_line(&e.to_string(), "openr.toml", split_lines(&text));
             return false;
         }
     };
@@ -220,7 +239,7 @@ pub fn openr_toml(data: &[u8]) -> bool {
     let mut printed = String::new();
     for (key, v) in keys {
         if let Some((v, _)) = v {
-            printed += &format!("{key} = \"{}\"\n", v.replace('\\', "\\\\").replace('"', "\\\""));
+            printed += &format!("{key} = {}\n", toml_string(v));
         }
     }
     let again = openr_config::parse_project_file(path, &printed).unwrap_or_else(|e| panic!("printed openr.toml: {e}\n{printed}"));
