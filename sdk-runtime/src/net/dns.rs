@@ -5,7 +5,8 @@ use std::ffi::{CStr, CString};
 use std::net::{Ipv4Addr, UdpSocket};
 use std::time::Duration;
 
-use super::stack::{State, PROTO_DNS};
+use super::codes::PROTO_DNS;
+use super::stack::State;
 use super::{Net, NetResult, Pending};
 
 mod code {

@@ -12,10 +12,13 @@
 //! endpoint FIFO, everything pending before a Close reply.
 #![deny(unsafe_op_in_unsafe_fn)]
 
+mod codes;
 pub mod config;
 mod dns;
 mod stack;
 mod sys;
+mod tcp;
+mod udp;
 
 use std::ffi::{c_char, c_void, CStr};
 use std::os::fd::{AsRawFd, FromRawFd, OwnedFd};
