@@ -93,26 +93,7 @@ pub fn dns_op(st: &mut State, net: &'static Net, p: Pending) {
             }
             None => p.fail(code::FAIL),
         },
-        OP_BY_NAME | OP_BY_ADDR => {
-            let servers = st.configured_dns_servers();
-            let domain = st.default_domain();
-            let port_of = |addr: u32| net.config.remote_port(addr, 53, "DNS server");
-            let ports: Vec<(u32, u16)> = servers.iter().map(|&a| (a, port_of(a))).collect();
-            dns_ep(st, id).expect("checked").inflight = Some(p);
-            let spawned = std::thread::Builder::new().name("ipstack-dns".into()).spawn(move || {
-                let outcome = if req.op == OP_BY_NAME {
-                    lookup_name(&ports, domain.as_deref(), &req.name())
-                } else {
-                    lookup_addr(&ports, req.addr)
-                };
-                let mut st = net.lock();
-                finish(&mut st, id, outcome);
-            });
-            if spawned.is_err() {
-                let p = dns_ep(st, id).expect("checked").inflight.take().expect("just set");
-                p.fail(code::FAIL);
-            }
-        }
+        OP_BY_NAME | OP_BY_ADDR => start_lookup(st, net, id, p),
         OP_GET_ADDRESS | OP_GET_ALIAS => {
             let Some(last) = ep.last.as_ref() else { return p.fail(code::OPERATION_INVALID) };
             let i = req.value;
@@ -128,8 +109,7 @@ pub fn dns_op(st: &mut State, net: &'static Net, p: Pending) {
             p.complete(r)
         }
         OP_CLOSE => {
-            let ep = dns_ep(st, id).expect("checked");
-            if let Some(q) = ep.inflight.take() {
+            if let Some(q) = dns_ep(st, id).and_then(|ep| ep.inflight.take()) {
                 failed(q, code::CONNECTION_CLOSED, 0);
             }
             st.eps.remove(&id);
@@ -137,6 +117,28 @@ pub fn dns_op(st: &mut State, net: &'static Net, p: Pending) {
             p.fail(code::SUCCESS)
         }
         _ => p.fail(code::OPERATION_UNKNOWN),
+    }
+}
+
+/// GetHostByName / GetHostByAddr: the lookup runs on a thread of its own; its reply comes
+/// through [`finish`].
+fn start_lookup(st: &mut State, net: &'static Net, id: u32, p: Pending) {
+    let req = p.req;
+    let servers = st.configured_dns_servers();
+    let domain = st.default_domain();
+    let port_of = |addr: u32| net.config.remote_port(addr, 53, "DNS server");
+    let ports: Vec<(u32, u16)> = servers.iter().map(|&a| (a, port_of(a))).collect();
+    let Some(ep) = dns_ep(st, id) else { return p.fail(code::CONNECTION_CLOSED) };
+    ep.inflight = Some(p);
+    let spawned = std::thread::Builder::new().name("ipstack-dns".into()).spawn(move || {
+        let outcome = if req.op == OP_BY_NAME { lookup_name(&ports, domain.as_deref(), &req.name()) } else { lookup_addr(&ports, req.addr) };
+        let mut st = net.lock();
+        finish(&mut st, id, outcome);
+    });
+    if spawned.is_err() {
+        if let Some(p) = dns_ep(st, id).and_then(|ep| ep.inflight.take()) {
+            p.fail(code::FAIL);
+        }
     }
 }
 
