@@ -11,6 +11,7 @@
 //! the commands, before the sensors) to send FRAME / SPEAKER and to collect what the
 //! peers supplied. A peer that disconnects leaves the robot where it last reported it;
 //! the built-in model continues from there.
+mod messages;
 mod outbox;
 pub mod wire;
 
@@ -518,188 +519,54 @@ fn connection(rt: &'static Runtime, conn: Conn) {
             return;
         }
     }
-    let peer = {
-        let mut st = hub.lock();
-        let id = st.next_id;
-        st.next_id += 1;
-        let mut granted = 0;
-        for bit in 0..ROLE_NAMES.len() {
-            if hello.roles & (1 << bit) != 0 && st.roles[bit].is_none() {
-                st.roles[bit] = Some(id);
-                granted |= 1 << bit;
-            }
-        }
-        let clock = hello.flags & FLAG_CLOCK != 0 && st.clock.is_none();
-        let name = if hello.name.is_empty() { format!("peer{id}") } else { hello.name.clone() };
-        let peer = Arc::new(Peer { id, name, roles: granted, conn, out: out.clone() });
-        // WELCOME goes out before the peer is listed: no FRAME can precede it.
-        let welcome = welcome_payload(rt, granted, clock);
-        if peer.send(WELCOME, st.last_frame, &welcome).is_err() {
-            peer.out.close();
-            for r in st.roles.iter_mut() {
-                if *r == Some(id) {
-                    *r = None;
-                }
-            }
-            return;
-        }
-        if clock {
-            st.clock = Some(id);
-        }
-        st.peers.push(peer.clone());
-        hub.active.store(true, std::sync::atomic::Ordering::Release);
-        let roles: Vec<&str> = (0..ROLE_NAMES.len()).filter(|b| granted & (1 << b) != 0).map(|b| ROLE_NAMES[b]).collect();
-        rt.diag.info(&format!(
-            "robot peer `{}` attached after frame {} (roles: {}{})",
-            peer.name,
-            st.last_frame,
-            if roles.is_empty() { "none".to_string() } else { roles.join(", ") },
-            if clock { "; owns the clock" } else { "" }
-        ));
-        peer
-    };
+    let Some(peer) = attach(rt, &hello, conn, out) else { return };
     hub.cv.notify_all();
-    let why = serve_peer(rt, &peer, &mut reader);
+    let why = messages::serve_peer(rt, &peer, &mut reader);
     hub.detach(rt, peer.id, &why);
 }
 
-/// Reads a peer's messages until it leaves; returns why it left.
-fn serve_peer(rt: &Runtime, peer: &Peer, reader: &mut impl Read) -> String {
+/// Grants what the HELLO asks for that is free, sends the WELCOME and lists the peer;
+/// None when the WELCOME cannot be sent (nothing is then held).
+fn attach(rt: &Runtime, hello: &Hello, conn: Conn, out: Arc<outbox::Outbox>) -> Option<Arc<Peer>> {
     let hub = &rt.vr.peers;
-    let fail = |code: u16, text: String| -> String {
-        let frame = hub.lock().last_frame;
-        rt.diag.warn(&format!("robot peer `{}`: {text} (error {code}; connection closed)", peer.name));
-        // The queue closes behind the ERROR: no FRAME can follow it.
-        peer.send_last(ERROR, frame, &error(code, &text));
-        format!("error {code}: {text}")
-    };
-    loop {
-        let (h, payload) = match read_message(reader) {
-            Ok(Some(Ok(m))) => m,
-            Ok(Some(Err(Refusal(code, text)))) => return fail(code, text),
-            Ok(None) => return "it closed the connection".into(),
-            Err(e) => return format!("connection lost: {e}"),
-        };
-        match h.kind {
-            READINGS => {
-                let r = match parse_readings(&payload) {
-                    Ok(r) => r,
-                    Err(e) => return fail(E_BAD_PAYLOAD, format!("READINGS: {e}")),
-                };
-                if let Err(e) = check_readings(rt, peer, &r) {
-                    return fail(e.0, e.1);
-                }
-                let mut st = hub.lock();
-                if st.clock == Some(peer.id) {
-                    match st.awaiting {
-                        Some((o, n)) if o == peer.id && n == h.frame => {
-                            st.lockstep = Some(r);
-                            st.awaiting = None;
-                            drop(st);
-                            hub.cv.notify_all();
-                        }
-                        Some((_, n)) => {
-                            drop(st);
-                            return fail(E_BAD_FRAME, format!("READINGS for frame {}, expected frame {n}", h.frame));
-                        }
-                        None => {
-                            let last = st.last_frame;
-                            drop(st);
-                            return fail(E_BAD_FRAME, format!("READINGS for frame {} while no frame awaits readings (last FRAME sent: {last})", h.frame));
-                        }
-                    }
-                } else {
-                    st.pending.push(r);
-                }
-            }
-            IMAGE => {
-                if peer.roles & ROLE_CAMERA == 0 {
-                    return fail(E_ROLE, "IMAGE without the camera role".into());
-                }
-                let robot = rt.vr.robot();
-                let (w, hh) = (robot.camera().rgb.width, robot.camera().rgb.height);
-                drop(robot);
-                let mut i = In::new(&payload);
-                let dims = (i.u16(), i.u16());
-                let rgb = i.rest();
-                match dims {
-                    (Ok(pw), Ok(ph)) if pw as usize == w && ph as usize == hh && rgb.len() == w * hh * 3 => {
-                        hub.lock().image = Some(rgb.to_vec());
-                    }
-                    _ => return fail(E_BAD_PAYLOAD, format!("IMAGE must be u16 width {w}, u16 height {hh}, then {} RGB bytes", w * hh * 3)),
-                }
-            }
-            MIC => {
-                if peer.roles & ROLE_MIC == 0 {
-                    return fail(E_ROLE, "MIC without the mic role".into());
-                }
-                if payload.len() % 4 != 0 {
-                    return fail(E_BAD_PAYLOAD, "MIC: 16-bit stereo PCM (a multiple of 4 bytes)".into());
-                }
-                let mut st = hub.lock();
-                if st.mic.len() + payload.len() > MIC_QUEUE_MAX {
-                    drop(st);
-                    return fail(E_OVERFLOW, format!("MIC: more than {MIC_QUEUE_MAX} bytes queued"));
-                }
-                st.mic.extend(payload.iter().copied());
-            }
-            CLOCK => {
-                let flags = match In::new(&payload).u32() {
-                    Ok(f) => f,
-                    Err(e) => return fail(E_BAD_PAYLOAD, format!("CLOCK: {e}")),
-                };
-                let mut st = hub.lock();
-                if flags & FLAG_CLOCK != 0 {
-                    if st.clock.is_none() {
-                        st.clock = Some(peer.id);
-                    }
-                } else if st.clock == Some(peer.id) {
-                    st.clock = None;
-                }
-                let owns = st.clock == Some(peer.id);
-                let frame = st.last_frame;
-                drop(st);
-                hub.cv.notify_all();
-                let mut o = Out::default();
-                o.u32(if owns { FLAG_CLOCK } else { 0 });
-                if let Err(why) = peer.send(CLOCK, frame, &o.0) {
-                    return why;
-                }
-            }
-            BYE => return "BYE".into(),
-            ERROR => {
-                let mut i = In::new(&payload);
-                let code = i.u16().unwrap_or(0);
-                let text = i.str().unwrap_or_default();
-                return format!("it reported error {code}: {text}");
-            }
-            HELLO => return fail(E_BAD_STATE, "HELLO twice".into()),
-            k => return fail(E_BAD_TYPE, format!("message type {k} is not accepted from a peer")),
+    let mut st = hub.lock();
+    let id = st.next_id;
+    st.next_id += 1;
+    let mut granted = 0;
+    for bit in 0..ROLE_NAMES.len() {
+        if hello.roles & (1 << bit) != 0 && st.roles[bit].is_none() {
+            st.roles[bit] = Some(id);
+            granted |= 1 << bit;
         }
     }
-}
-
-/// Every primitive of a READINGS message is known and belongs to a role of the peer.
-fn check_readings(rt: &Runtime, peer: &Peer, r: &Readings) -> std::result::Result<(), (u16, String)> {
-    let robot = rt.vr.robot();
-    let model = robot.model();
-    for &(id, _) in r.joints.iter().chain(&r.sensors) {
-        let Some(p) = model.primitive(id) else {
-            return Err((E_BAD_PAYLOAD, format!("READINGS: unknown primitive ID {id:#x}")));
-        };
-        let Some(role) = role_of(p.kind) else {
-            return Err((E_BAD_PAYLOAD, format!("READINGS: {} ({id:#x}) has no readings", p.locator)));
-        };
-        let is_joint = r.joints.iter().any(|&(j, _)| j == id);
-        if is_joint != (role == ROLE_JOINTS) {
-            return Err((E_BAD_PAYLOAD, format!("READINGS: {} ({id:#x}) listed in the wrong section", p.locator)));
+    let clock = hello.flags & FLAG_CLOCK != 0 && st.clock.is_none();
+    let name = if hello.name.is_empty() { format!("peer{id}") } else { hello.name.clone() };
+    let peer = Arc::new(Peer { id, name, roles: granted, conn, out });
+    // WELCOME goes out before the peer is listed: no FRAME can precede it.
+    let welcome = welcome_payload(rt, granted, clock);
+    if peer.send(WELCOME, st.last_frame, &welcome).is_err() {
+        peer.out.close();
+        for r in st.roles.iter_mut() {
+            if *r == Some(id) {
+                *r = None;
+            }
         }
-        if peer.roles & role == 0 {
-            let name = ROLE_NAMES[role.trailing_zeros() as usize];
-            return Err((E_ROLE, format!("READINGS: {} needs the {name} role, which this peer does not hold", p.locator)));
-        }
+        return None;
     }
-    Ok(())
+    if clock {
+        st.clock = Some(id);
+    }
+    st.peers.push(peer.clone());
+    hub.active.store(true, std::sync::atomic::Ordering::Release);
+    let roles: Vec<&str> = (0..ROLE_NAMES.len()).filter(|b| granted & (1 << b) != 0).map(|b| ROLE_NAMES[b]).collect();
+    rt.diag.info(&format!(
+        "robot peer `{}` attached after frame {} (roles: {}{})",
+        peer.name,
+        st.last_frame,
+        if roles.is_empty() { "none".to_string() } else { roles.join(", ") },
+        if clock { "; owns the clock" } else { "" }
+    ));
+    Some(peer)
 }
 
 #[cfg(test)]
