@@ -47,6 +47,24 @@ use super::vectors::SensorValue;
 
 /// Standard gravity, µm/s².
 pub const G_UM_S2: f64 = 9_806_650.0;
+/// Accelerometer range, µm/s²: ±2 g (ers7-model 5.4).
+pub const ACCEL_MAX: i32 = 19_613_300;
+/// Measuring ranges (min, max) of the distance sensors, µm (ers7-model 5.3): the ERS-7
+/// head's near and far PSDs, and its chest PSD (also the ERS-210/220 head PSD).
+pub const PSD_HEAD_NEAR: (i32, i32) = (50_000, 500_000);
+pub const PSD_HEAD_FAR: (i32, i32) = (200_000, 1_500_000);
+pub const PSD_CHEST: (i32, i32) = (100_000, 900_000);
+
+/// The measuring range of a distance sensor, µm.
+pub fn psd_range(part: Part) -> Option<(i32, i32)> {
+    match part {
+        Part::PsdHeadNear => Some(PSD_HEAD_NEAR),
+        Part::PsdHeadFar => Some(PSD_HEAD_FAR),
+        Part::PsdHead | Part::PsdChest => Some(PSD_CHEST),
+        _ => None,
+    }
+}
+
 const UPPER: f64 = 69.5;
 const LOWER_FRONT: f64 = 71.5;
 const LOWER_REAR: f64 = 76.5;
@@ -169,7 +187,7 @@ pub fn gravity(p: &Posture) -> [i32; 3] {
     let a1 = G_UM_S2 * p.pitch.sin();
     let a2 = -G_UM_S2 * p.roll.sin() * p.pitch.cos();
     let a3 = G_UM_S2 * p.pitch.cos() * p.roll.cos();
-    [a1, a2, a3].map(|v| v.round().clamp(-19_613_300.0, 19_613_300.0) as i32)
+    [a1, a2, a3].map(|v| v.round().clamp(-ACCEL_MAX as f64, ACCEL_MAX as f64) as i32)
 }
 
 /// Distance (mm) along a beam from `height` mm above the floor, pointing `down` rad
@@ -184,7 +202,7 @@ fn beam_distance(height: f64, down: f64, yaw: f64, wall: Option<f64>) -> f64 {
     floor.min(wall)
 }
 
-fn psd_value(mm: f64, lo_um: i32, hi_um: i32) -> SensorValue {
+fn psd_value(mm: f64, (lo_um, hi_um): (i32, i32)) -> SensorValue {
     let um = if mm.is_finite() { (mm * 1000.0).round().clamp(lo_um as f64, hi_um as f64) as i32 } else { hi_um };
     // raw A/D: larger for nearer objects (PSD output falls with distance), never 0
     let signal = ((lo_um as f64 / um as f64) * 4000.0).round().clamp(1.0, 4095.0) as u16;
@@ -204,10 +222,10 @@ fn touch(on: bool) -> SensorValue {
 /// (an external robot peer): the same mappings as the synthesized readings.
 pub fn signal_for(part: Part, value: i32) -> u16 {
     match part {
-        Part::PsdHeadNear => psd_value(value as f64 / 1000.0, 50_000, 500_000).signal,
-        Part::PsdHeadFar => psd_value(value as f64 / 1000.0, 200_000, 1_500_000).signal,
-        Part::PsdHead | Part::PsdChest => psd_value(value as f64 / 1000.0, 100_000, 900_000).signal,
-        Part::Accel(_) => (value as f64 / 19_613_300.0 * 32767.0 + 32768.0).round().clamp(0.0, 65535.0) as u16,
+        Part::PsdHeadNear => psd_value(value as f64 / 1000.0, PSD_HEAD_NEAR).signal,
+        Part::PsdHeadFar => psd_value(value as f64 / 1000.0, PSD_HEAD_FAR).signal,
+        Part::PsdHead | Part::PsdChest => psd_value(value as f64 / 1000.0, PSD_CHEST).signal,
+        Part::Accel(_) => (value as f64 / ACCEL_MAX as f64 * 32767.0 + 32768.0).round().clamp(0.0, 65535.0) as u16,
         Part::HeadPressure(_) => {
             if value > 0 {
                 512
@@ -243,8 +261,8 @@ impl SensorSynth {
         let head_mm = beam_distance(head_height, -(p.pitch + tilt1 + tilt2), pan, scene.wall_mm);
         let chest_mm = beam_distance(p.height_mm, PI / 6.0 - p.pitch, 0.0, scene.wall_mm);
 
-        let near_now = psd_value(head_mm, 50_000, 500_000);
-        let far_now = psd_value(head_mm, 200_000, 1_500_000);
+        let near_now = psd_value(head_mm, PSD_HEAD_NEAR);
+        let far_now = psd_value(head_mm, PSD_HEAD_FAR);
         let near_turn = frame % 2 == 0;
         let repeat = |last: Option<SensorValue>, now: SensorValue| SensorValue { value: last.unwrap_or(now).value, signal: 0 };
         let near = if near_turn { near_now } else { repeat(self.last_near, near_now) };
@@ -260,7 +278,7 @@ impl SensorSynth {
                 c
             }
             _ => {
-                let c = psd_value(chest_mm, 100_000, 900_000);
+                let c = psd_value(chest_mm, PSD_CHEST);
                 self.last_chest = Some(c);
                 self.chest_age = 0;
                 c
@@ -286,11 +304,11 @@ impl SensorSynth {
                 }
                 (Part::PsdHeadNear, _) => near,
                 (Part::PsdHeadFar, _) => far,
-                (Part::PsdHead, _) => psd_value(head_mm, 100_000, 900_000),
+                (Part::PsdHead, _) => psd_value(head_mm, PSD_CHEST),
                 (Part::PsdChest, _) => chest,
                 (Part::Accel(i), _) => {
                     let v = acc.get(i as usize).copied().unwrap_or(0);
-                    let signal = (v as f64 / 19_613_300.0 * 32767.0 + 32768.0).round().clamp(0.0, 65535.0) as u16;
+                    let signal = (v as f64 / ACCEL_MAX as f64 * 32767.0 + 32768.0).round().clamp(0.0, 65535.0) as u16;
                     SensorValue { value: v, signal }
                 }
                 (Part::Thermometer, _) | (_, SensorKind::Thermometer) => {

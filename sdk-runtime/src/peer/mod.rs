@@ -13,6 +13,8 @@
 //! the built-in model continues from there.
 mod messages;
 mod outbox;
+#[cfg(test)]
+mod python_agrees;
 pub mod wire;
 
 use std::collections::VecDeque;
