@@ -84,6 +84,15 @@ def parse_welcome(p):
         pid, cls, sensor_index, lo, hi = r.get("IHhii")
         prims.append({"id": pid, "class": CLASS_NAMES.get(cls, cls), "sensor_index": sensor_index,
                       "min_urad": lo, "max_urad": hi, "locator": r.str()})
+    if w["revision"] >= 2:  # sensor value ranges and standard gains
+        by_id = {p["id"]: p for p in prims}
+        for _ in range(r.get("H")):
+            pid, lo, hi, gp, gi, gd = r.get("IiiHHH")
+            p = by_id.get(pid, {})
+            if (lo, hi) != (0, 0):
+                p["value_min"], p["value_max"] = lo, hi
+            if p.get("class") == "joint":
+                p["standard_gain"] = [gp, gi, gd]
     w["primitives"] = prims
     w["roles"] = [ROLE_NAMES[b] for b in range(7) if w["roles"] & (1 << b)]
     w["clock"] = bool(w.pop("flags") & FLAG_CLOCK)

@@ -55,6 +55,15 @@ pub const PSD_HEAD_NEAR: (i32, i32) = (50_000, 500_000);
 pub const PSD_HEAD_FAR: (i32, i32) = (200_000, 1_500_000);
 pub const PSD_CHEST: (i32, i32) = (100_000, 900_000);
 
+/// The range of a sensor's `value` where the model clips it: accelerometers (µm/s²) and
+/// distance sensors (µm).
+pub fn value_range(part: Part) -> Option<(i32, i32)> {
+    match part {
+        Part::Accel(_) => Some((-ACCEL_MAX, ACCEL_MAX)),
+        _ => psd_range(part),
+    }
+}
+
 /// The measuring range of a distance sensor, µm.
 pub fn psd_range(part: Part) -> Option<(i32, i32)> {
     match part {

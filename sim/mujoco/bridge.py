@@ -29,18 +29,18 @@ import numpy as np
 from robot_peer import FRAME_CAMERA_DUE, FRAME_CAMERA_NEXT
 from world import servo_gains
 
-ACCEL_MAX = 19613300  # µm/s², ±2 g (ers7-model 5.4)
 GAIN_SCALE = 4.0  # estimated, see above
 PAW_THRESHOLD_N = 0.5  # estimated: a paw "switch" closes with 0.5 N of contact force
 ACCEL_SIGMA = 0.05  # m/s², estimated
 PSD_SIGMA = 0.001  # m, estimated
 EAR_UP = math.radians(15)  # ers7.xml E10
 EAR_KP, EAR_KV = 0.5, 0.005  # estimated: a quick snap within a frame or two
-# distance sensors (ers7-model 5.3): locator -> (sensor name in ers7.xml, min µm, max µm)
+# distance sensors (ers7-model 5.3): locator -> sensor name in ers7.xml; their ranges
+# (and the accelerometer's) come with the WELCOME (revision 2)
 PSDS = {
-    "PRM:/p1-Sensor:p1": ("psd_chest", 100000, 900000),
-    "PRM:/r1/c1/c2/c3/p1-Sensor:p1": ("psd_near", 50000, 500000),
-    "PRM:/r1/c1/c2/c3/p2-Sensor:p2": ("psd_far", 200000, 1500000),
+    "PRM:/p1-Sensor:p1": "psd_chest",
+    "PRM:/r1/c1/c2/c3/p1-Sensor:p1": "psd_near",
+    "PRM:/r1/c1/c2/c3/p2-Sensor:p2": "psd_far",
 }
 PAWS = {"24": "lf_paw", "34": "lr_paw", "44": "rf_paw", "54": "rr_paw"}
 # accelerometer locator -> (MuJoCo axis, sign): a1 forward, a2 right (MuJoCo y is left), a3 up
@@ -107,6 +107,8 @@ class Bridge:
         self.joints, self.ranges, self.ears = {}, {}, {}
         self.accel, self.paws, self.psds = [], [], []
         granted = set(welcome["roles"])
+        if welcome["revision"] < 2:
+            raise ValueError(f"the runtime speaks protocol revision {welcome['revision']}; the bridge needs 2 (sensor ranges in WELCOME)")
         for p in welcome["primitives"]:
             loc, pid = p["locator"], p["id"]
             num = loc.rsplit(":", 1)[-1]
@@ -116,11 +118,11 @@ class Bridge:
             elif p["class"] == "ear" and num in robot.act:
                 self.ears[pid] = num
             elif loc in ACCEL and "accel" in granted:
-                self.accel.append((pid,) + ACCEL[loc])
+                self.accel.append((pid,) + ACCEL[loc] + (p["value_min"], p["value_max"]))
             elif p["class"] == "switch" and num in PAWS and "switches" in granted:
                 self.paws.append((pid, PAWS[num]))
             elif loc in PSDS and "psd" in granted:
-                self.psds.append((pid,) + PSDS[loc])
+                self.psds.append((pid, PSDS[loc], p["value_min"], p["value_max"]))
         # readings: joint IDs and their qpos addresses, in a fixed order
         self.joint_ids = np.array(list(self.joints), np.uint32)
         self.joint_q = np.array([robot.act[n][1] for n in self.joints.values()], np.intp)
@@ -178,7 +180,7 @@ class Bridge:
         angles = np.rint(self.qpos[self.joint_q] * 1e6)
         values = self.sensordata[self.sensor_adr].tolist()  # accel x y z, paws, PSDs
         acc = [v + n for v, n in zip(values, self.rng.normal(0.0, ACCEL_SIGMA, 3).tolist())]
-        sensors = [max(-ACCEL_MAX, min(ACCEL_MAX, round(sign * acc[axis] * 1e6))) for _, axis, sign in self.accel]
+        sensors = [max(lo, min(hi, round(sign * acc[axis] * 1e6))) for _, axis, sign, lo, hi in self.accel]
         at = 3
         sensors += [int(v > PAW_THRESHOLD_N) for v in values[at:at + len(self.paws)]]
         at += len(self.paws)

@@ -166,7 +166,15 @@ fn lockstep_python_peer_drives_the_clock_and_supplies_the_joint_angles() {
     assert_eq!(numbers, (1..=375).collect::<Vec<u64>>());
     assert!(frames.iter().all(|f| f["readings_expected"] == true));
     assert!(out.stderr.contains("375 frames"), "{}", out.stderr);
-    assert_eq!(welcome["revision"], 1);
+    assert_eq!(welcome["revision"], 2);
+    // revision 2: the sensor value ranges and standard gains, so a simulator copies none
+    let prim = |loc: &str| welcome["primitives"].as_array().unwrap().iter().find(|p| p["locator"] == loc).unwrap().clone();
+    let accel = prim("PRM:/a1-Sensor:a1");
+    assert_eq!((accel["value_min"].as_i64(), accel["value_max"].as_i64()), (Some(-19_613_300), Some(19_613_300)), "{accel}");
+    let far = prim("PRM:/r1/c1/c2/c3/p2-Sensor:p2");
+    assert_eq!((far["value_min"].as_i64(), far["value_max"].as_i64()), (Some(200_000), Some(1_500_000)), "{far}");
+    assert_eq!(prim("PRM:/r2/c1-Joint2:21")["standard_gain"], serde_json::json!([0x1C, 0x08, 0x01]));
+    assert!(prim("PRM:/b1-Sensor:b1").get("value_min").is_none() && prim("PRM:/b1-Sensor:b1").get("standard_gain").is_none());
     // 30 pictures a second, each announced by the frame before it (flag bit 4)
     let due: Vec<u64> = frames.iter().filter(|f| f["camera_due"] == true).map(|f| f["frame"].as_u64().unwrap()).collect();
     let announced: Vec<u64> = frames.iter().filter(|f| f["camera_next"] == true).map(|f| f["frame"].as_u64().unwrap() + 1).collect();

@@ -27,6 +27,7 @@ use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use crate::audio::{Format, MIC_FORMAT};
 use crate::error::{Error, ErrorKind, Result};
 use crate::robot::model::{PrimitiveKind, SensorKind};
+use crate::robot::scene::value_range;
 use crate::robot::{PendingFrame, PrimitiveId, Readings, VirtualRobot};
 use crate::runtime::Runtime;
 use wire::*;
@@ -425,6 +426,20 @@ fn welcome_payload(rt: &Runtime, granted: u32, clock: bool) -> Vec<u8> {
     for p in model.primitives() {
         let (min, max) = p.joint.map_or((0, 0), |j| (j.min, j.max));
         o.u32(p.id).u16(class_of(p.kind)).i16(p.sensor_index.map_or(-1, |i| i as i16)).i32(min).i32(max).str(p.locator);
+    }
+    // Revision 2: what a simulator would otherwise copy from the model.
+    let extra: Vec<_> = model
+        .primitives()
+        .iter()
+        .filter_map(|p| {
+            let range = value_range(p.part);
+            let gain = p.joint.map(|j| j.default_gain);
+            (range.is_some() || gain.is_some()).then(|| (p.id, range.unwrap_or((0, 0)), gain.unwrap_or_default()))
+        })
+        .collect();
+    o.u16(extra.len() as u16);
+    for (id, (lo, hi), g) in extra {
+        o.u32(id).i32(lo).i32(hi).u16(g.p).u16(g.i).u16(g.d);
     }
     o.0
 }

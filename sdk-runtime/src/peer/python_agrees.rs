@@ -1,16 +1,16 @@
 //! The numbers the Python peers copy from this crate, as one flat table, and the test that
-//! they agree. `tools/robot_peer.py` (the protocol codec, standard library only) and
-//! `sim/mujoco/bridge.py` run without the runtime, so they keep their own copies of the
-//! protocol's constants ([`super::wire`]), the sensor ranges and the standard gains and
-//! stand posture (`robot::model`, `robot::scene`); the test reads theirs with python3 and
-//! fails on any difference, whichever side changed.
+//! they agree. What a peer can learn from the WELCOME it is not given a copy of (the sensor
+//! value ranges and standard gains, revision 2); what it needs before or without one is
+//! copied: `tools/robot_peer.py` (the protocol codec, standard library only) keeps the
+//! protocol's constants ([`super::wire`]), and `sim/mujoco/bridge.py` the standard P gains
+//! and stand posture (`robot::model`) for robots that have no runtime. The test reads
+//! theirs with python3 and fails on any difference, whichever side changed.
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command;
 
 use super::wire::*;
 use crate::robot::model::{Design, PrimitiveKind, RobotModel, POSTURE_PARTS, POSTURE_STAND};
-use crate::robot::scene::{psd_range, ACCEL_MAX};
 
 /// Key → value (as text) of everything the Python side copies.
 fn rust_table() -> BTreeMap<String, String> {
@@ -45,13 +45,7 @@ fn rust_table() -> BTreeMap<String, String> {
     for (k, v) in classes.into_iter().chain(more).chain([("OTHER", CLASS_OTHER)]) {
         put(&format!("CLASS_{k}"), &v);
     }
-    put("ACCEL_MAX", &ACCEL_MAX);
     let model = RobotModel::new(Design::Ers7);
-    for p in model.primitives() {
-        if let Some((lo, hi)) = psd_range(p.part) {
-            put(&format!("PSD {}", p.locator), &format!("{lo} {hi}"));
-        }
-    }
     // The bridge keys joints by their OPEN-R number, the locator's last field.
     let number = |locator: &str| locator.rsplit(':').next().unwrap_or(locator).to_string();
     for p in model.primitives().iter().filter(|p| p.kind == PrimitiveKind::Joint2) {
@@ -90,11 +84,8 @@ tables = {}
 for node in ast.parse(src).body:
     if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name):
         name = node.targets[0].id
-        if name in ("ACCEL_MAX", "PSDS", "STANDARD_P", "STAND"):
+        if name in ("STANDARD_P", "STAND"):
             tables[name] = eval(compile(ast.Expression(node.value), "bridge.py", "eval"), {})
-emit("ACCEL_MAX", tables["ACCEL_MAX"])
-for loc, (_, lo, hi) in tables["PSDS"].items():
-    emit("PSD " + loc, f"{lo} {hi}")
 for n, p in tables["STANDARD_P"].items():
     emit("STANDARD_P " + n, p)
 for n, d in tables["STAND"].items():
@@ -132,7 +123,7 @@ fn differences(rust: &BTreeMap<String, String>, python: &BTreeMap<String, String
 #[test]
 fn the_python_peers_copy_the_rust_numbers_exactly() {
     let rust = rust_table();
-    // 10 kinds, 7 roles, 5 FRAME flags, 11 classes, 3 PSDs, 18 gains, 18 stand angles...
+    // 10 kinds, 7 roles, 5 FRAME flags, 11 classes, 18 gains, 18 stand angles...
     assert!(rust.len() > 70, "{rust:?}");
     let diff = differences(&rust, &python_table());
     assert!(diff.is_empty(), "the Python peers disagree with the runtime:\n{}", diff.join("\n"));

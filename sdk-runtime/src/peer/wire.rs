@@ -7,7 +7,9 @@ pub const MAGIC: [u8; 4] = *b"ORP1";
 /// Protocol version carried in every header; a different one is refused.
 pub const VERSION: u16 = 1;
 /// Compatible additions (fields appended to payloads, new message types) bump this.
-pub const REVISION: u16 = 1;
+/// 1: FRAME flag `FRAME_CAMERA_NEXT`; 2: WELCOME's table of sensor value ranges and
+/// standard gains.
+pub const REVISION: u16 = 2;
 pub const HEADER_LEN: usize = 16;
 /// Largest payload accepted (a camera picture of the ERS-7 is 399 360 bytes).
 pub const MAX_PAYLOAD: u32 = 4 << 20;
