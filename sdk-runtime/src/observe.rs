@@ -32,6 +32,8 @@ pub struct Frame<'a> {
     pub t_ms: u64,
     /// The camera took a picture in this frame (`VirtualRobot::camera_rgb` is it).
     pub picture: bool,
+    /// A sensor vector was produced in this frame (the trace has a `sensor` record).
+    pub sensor: bool,
     /// The sounds that started playing in this frame (their PCM as the vector has it:
     /// 8-bit signed or 16-bit little-endian; zeros while the amplifier is off).
     pub sounds: &'a [(crate::audio::Format, Vec<u8>)],

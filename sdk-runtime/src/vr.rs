@@ -158,6 +158,7 @@ impl VrService {
                 let _ = rt.send(oid, sel, event_bytes(&ev));
             }
         }
+        let sensor = out.sensor_vector.is_some();
         if let Some(vector) = out.sensor_vector {
             self.publish_slice(rt, SERVICE_SENSOR, &vector);
         }
@@ -195,7 +196,7 @@ impl VrService {
             }
         }
         if let Some(observers) = self.observers.get() {
-            let frame = crate::observe::Frame { frame: out.frame, t_ms: out.time_ms, picture, sounds: &played.started };
+            let frame = crate::observe::Frame { frame: out.frame, t_ms: out.time_ms, picture, sensor, sounds: &played.started };
             for o in &observers.0 {
                 o.frame(rt, &frame);
             }

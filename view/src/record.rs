@@ -1,7 +1,8 @@
 //! `cargo openr run --record DIR`: writes what the view shows into DIR, in the format
 //! of docs/recording.md. The runtime writes the trace (`trace.jsonl`, the `--trace`
-//! format); this observer writes the manifest, the camera pictures and the speaker's
-//! sound on the virtual timeline. Pictures and sound are handed to a writer thread, so
+//! format); this observer writes the manifest, what the view shows beyond the trace
+//! (joint targets, every sensor, the battery: `view.jsonl`, one line per sensor frame),
+//! the camera pictures and the speaker's sound on the virtual timeline. Pictures and sound are handed to a writer thread, so
 //! the frame thread only copies them; their content and order come from the frames, so
 //! a run at `--speed max` writes the same bytes every time.
 use std::io::Write;
@@ -22,10 +23,12 @@ pub const VERSION: u64 = 1;
 pub const TRACE: &str = "trace.jsonl";
 pub const CAMERA_INDEX: &str = "camera.jsonl";
 pub const SPEAKER: &str = "speaker.wav";
+pub const VIEW: &str = "view.jsonl";
 
 enum Item {
     Picture { t_ms: u64, frame: u32, width: u32, height: u32, rgb: Vec<u8> },
     Sound { t_ms: u64, format: Format, pcm: Vec<u8> },
+    View(serde_json::Value),
 }
 
 /// The recorder of one run.
@@ -40,7 +43,7 @@ impl Recorder {
     /// goes to [`Recorder::trace_path`].
     pub fn create(dir: &Path) -> std::result::Result<Recorder, String> {
         std::fs::create_dir_all(dir.join("camera")).map_err(|e| format!("--record {}: cannot create the directory: {e}", dir.display()))?;
-        for stale in [CAMERA_INDEX, SPEAKER, MANIFEST] {
+        for stale in [CAMERA_INDEX, SPEAKER, MANIFEST, VIEW] {
             let _ = std::fs::remove_file(dir.join(stale));
         }
         Ok(Recorder { dir: dir.to_path_buf(), tx: Mutex::new(None), writer: Mutex::new(None) })
@@ -60,24 +63,29 @@ impl Observer for Recorder {
         let design = rt.vr.robot().model().design().name();
         let manifest = serde_json::json!({
             "format": FORMAT, "version": VERSION, "design": design, "frame_ms": 8,
-            "trace": TRACE, "camera": CAMERA_INDEX, "speaker": SPEAKER,
+            "trace": TRACE, "view": VIEW, "camera": CAMERA_INDEX, "speaker": SPEAKER,
         });
         let path = self.dir.join(MANIFEST);
         std::fs::write(&path, format!("{}\n", serde_json::to_string_pretty(&manifest).expect("json"))).map_err(|e| io_err(&path, e))?;
         let index_path = self.dir.join(CAMERA_INDEX);
         let index = std::fs::File::create(&index_path).map_err(|e| io_err(&index_path, e))?;
+        let view_path = self.dir.join(VIEW);
+        let view = std::fs::File::create(&view_path).map_err(|e| io_err(&view_path, e))?;
         let (tx, rx) = channel::<Item>();
         let dir = self.dir.clone();
         let writer = std::thread::Builder::new()
             .name("openr-record".into())
             .spawn(move || {
-                let mut w = Writer { dir, index: std::io::BufWriter::new(index), pictures: 0, wav: None, samples: 0 };
+                let mut w = Writer { dir, index: std::io::BufWriter::new(index), view: Some(std::io::BufWriter::new(view)), pictures: 0, wav: None, samples: 0 };
                 for item in rx {
                     if let Err(e) = w.write(item) {
                         eprintln!("warning: --record: {e}");
                     }
                 }
                 let _ = w.index.flush();
+                if let Some(v) = w.view.as_mut() {
+                    let _ = v.flush();
+                }
             })
             .map_err(|e| ErrorKind::Runtime(format!("cannot start the recorder: {e}")))?;
         *self.tx.lock().unwrap_or_else(|p| p.into_inner()) = Some(tx);
@@ -90,6 +98,9 @@ impl Observer for Recorder {
         let Some(tx) = tx.as_ref() else { return };
         for (format, pcm) in f.sounds {
             let _ = tx.send(Item::Sound { t_ms: f.t_ms, format: *format, pcm: pcm.clone() });
+        }
+        if f.sensor {
+            let _ = tx.send(Item::View(view_record(rt, f)));
         }
         if f.picture {
             let robot = rt.vr.robot();
@@ -106,9 +117,19 @@ impl Observer for Recorder {
     }
 }
 
+/// What the page shows that the trace lacks, at a sensor frame: the joints' targets,
+/// every sensor, the battery (the live snapshot's values).
+fn view_record(rt: &Runtime, f: &Frame<'_>) -> serde_json::Value {
+    let s = crate::snapshot::take(rt);
+    let targets: serde_json::Map<String, serde_json::Value> =
+        s["joints"].as_array().into_iter().flatten().map(|j| (j["locator"].as_str().unwrap_or("").to_string(), j["target_deg"].clone())).collect();
+    serde_json::json!({ "t_ms": f.t_ms, "frame": f.frame, "targets": targets, "sensors": s["sensors"], "battery": s["battery"] })
+}
+
 struct Writer {
     dir: PathBuf,
     index: std::io::BufWriter<std::fs::File>,
+    view: Option<std::io::BufWriter<std::fs::File>>,
     pictures: u64,
     wav: Option<WavWriter>,
     /// Sample frames written to the WAV so far.
@@ -130,6 +151,10 @@ impl Writer {
                 self.index.flush().map_err(|e| format!("{CAMERA_INDEX}: {e}"))
             }
             Item::Sound { t_ms, format, pcm } => self.sound(t_ms, format, &pcm),
+            Item::View(v) => match self.view.as_mut() {
+                Some(w) => writeln!(w, "{v}").map_err(|e| format!("{VIEW}: {e}")),
+                None => Ok(()),
+            },
         }
     }
 
@@ -184,7 +209,7 @@ mod tests {
 
     fn writer(dir: &Path) -> Writer {
         let index = std::fs::File::create(dir.join(CAMERA_INDEX)).unwrap();
-        Writer { dir: dir.to_path_buf(), index: std::io::BufWriter::new(index), pictures: 0, wav: None, samples: 0 }
+        Writer { dir: dir.to_path_buf(), index: std::io::BufWriter::new(index), view: None, pictures: 0, wav: None, samples: 0 }
     }
 
     /// Sounds land at their frame's start on the virtual timeline, silence between.

@@ -3,7 +3,9 @@
 //! (the shape `/state` serves live) built from the trace: the joints of the newest
 //! sensor record, the LEDs, ears, face mode and motor power as last set, the paw
 //! switches and the accelerometer; one per virtual time at which the trace has records.
-//! Values the trace does not carry (joint targets, distances, the battery) are absent.
+//! What the trace does not carry (joint targets, the other sensors, the battery) comes
+//! from a recording's `view.jsonl` (the newest line at or before the moment); a bare
+//! trace goes without.
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
@@ -32,7 +34,7 @@ pub fn open(path: &Path) -> Res<Recording> {
     let meta = std::fs::metadata(path).map_err(|e| format!("{}: {}", path.display(), io_reason(&e)))?;
     if !meta.is_dir() {
         let (design, records) = read_trace(path, None)?;
-        return Ok(Recording { source: path.into(), design: design.name(), states: states(design, &records, &[]), pictures: Vec::new(), speaker: None });
+        return Ok(Recording { source: path.into(), design: design.name(), states: states(design, &records, &[], &[]), pictures: Vec::new(), speaker: None });
     }
     let manifest_path = path.join(MANIFEST);
     if !manifest_path.is_file() {
@@ -53,12 +55,13 @@ pub fn open(path: &Path) -> Res<Recording> {
     let file = |key: &str, default: &str| path.join(m[key].as_str().unwrap_or(default));
     let (_, records) = read_trace(&file("trace", TRACE), Some(design))?;
     let camera = read_camera_index(path, &file("camera", CAMERA_INDEX))?;
+    let views = read_view(&file("view", crate::record::VIEW))?;
     let speaker = Some(file("speaker", crate::record::SPEAKER)).filter(|p| p.is_file());
     let times: Vec<u64> = camera.iter().map(|c| c.0).collect();
     Ok(Recording {
         source: path.into(),
         design: design.name(),
-        states: states(design, &records, &times),
+        states: states(design, &records, &times, &views),
         pictures: camera.into_iter().map(|c| c.1).collect(),
         speaker,
     })
@@ -150,6 +153,29 @@ fn read_camera_index(dir: &Path, index: &Path) -> Res<Vec<(u64, PathBuf)>> {
     Ok(out)
 }
 
+/// `view.jsonl` (absent: none): each line an object with `t_ms`, in time order.
+fn read_view(path: &Path) -> Res<Vec<Value>> {
+    let text = match std::fs::read_to_string(path) {
+        Ok(t) => t,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) => return Err(format!("{}: {}", path.display(), io_reason(&e))),
+    };
+    let mut out: Vec<Value> = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        if line.trim().is_empty() {
+            continue;
+        }
+        let at = format!("{}:{}", path.display(), i + 1);
+        let v: Value = serde_json::from_str(line).map_err(|e| format!("{at}: not a view record: {e}"))?;
+        let t = v["t_ms"].as_u64().ok_or_else(|| format!("{at}: not a view record: it needs \"t_ms\""))?;
+        if out.last().is_some_and(|l| l["t_ms"].as_u64() > Some(t)) {
+            return Err(format!("{at}: time goes back ({t} ms)"));
+        }
+        out.push(v);
+    }
+    Ok(out)
+}
+
 /// What the trace says about the robot so far.
 #[derive(Default)]
 struct Now {
@@ -162,8 +188,9 @@ struct Now {
     accel: [f64; 3],
 }
 
-/// One snapshot per virtual time with records; `pictures` are the camera's times.
-fn states(design: Design, records: &[Value], pictures: &[u64]) -> Vec<Value> {
+/// One snapshot per virtual time with records; `pictures` are the camera's times,
+/// `views` the records of `view.jsonl`.
+fn states(design: Design, records: &[Value], pictures: &[u64], views: &[Value]) -> Vec<Value> {
     let robot = VirtualRobot::new(design);
     let prims = robot.model().primitives();
     let mut now = Now::default();
@@ -176,7 +203,8 @@ fn states(design: Design, records: &[Value], pictures: &[u64]) -> Vec<Value> {
         }
         let frame = r["frame"].as_u64().unwrap_or(0);
         let camera_images = pictures.partition_point(|&p| p <= t);
-        out.push(now.snapshot(design, prims, t, frame, camera_images));
+        let view = views.partition_point(|v| v["t_ms"].as_u64().unwrap_or(0) <= t).checked_sub(1).map(|k| &views[k]);
+        out.push(now.snapshot(design, prims, (t, frame, camera_images), view));
     }
     out
 }
@@ -214,12 +242,13 @@ impl Now {
         }
     }
 
-    fn snapshot(&self, design: Design, prims: &[sdk_runtime::robot::model::Primitive], t: u64, frame: u64, camera_images: usize) -> Value {
+    /// The page's snapshot; the trace's values win over `view`'s where both have one.
+    fn snapshot(&self, design: Design, prims: &[sdk_runtime::robot::model::Primitive], (t, frame, camera_images): (u64, u64, usize), view: Option<&Value>) -> Value {
         let (mut joints, mut leds, mut ears, mut sensors) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
         for p in prims {
             let loc = p.locator;
             match p.kind {
-                PrimitiveKind::Joint2 => joints.push(json!({ "locator": loc, "deg": self.joints.get(loc).copied().unwrap_or(0.0), "target_deg": null })),
+                PrimitiveKind::Joint2 => joints.push(json!({ "locator": loc, "deg": self.joints.get(loc).copied().unwrap_or(0.0), "target_deg": view.map_or(Value::Null, |v| v["targets"][loc].clone()) })),
                 PrimitiveKind::Led2 | PrimitiveKind::Led3 => {
                     let (value, mode) = self.leds.get(loc).copied().unwrap_or((0, 0));
                     let kind = if p.kind == PrimitiveKind::Led2 { 2 } else { 3 };
@@ -237,10 +266,25 @@ impl Now {
                 _ => {}
             }
         }
+        if let Some(listed) = view.and_then(|v| v["sensors"].as_array()) {
+            let traced: HashMap<&str, &Value> = sensors.iter().filter_map(|s| Some((s["locator"].as_str()?, &s["value"]))).collect();
+            let merged: Vec<Value> = listed
+                .iter()
+                .map(|s| {
+                    let mut s = s.clone();
+                    if let Some(v) = s["locator"].as_str().and_then(|l| traced.get(l)) {
+                        s["value"] = (*v).clone();
+                    }
+                    s
+                })
+                .collect();
+            sensors = merged;
+        }
+        let battery = view.map_or(Value::Null, |v| v["battery"].clone());
         json!({
             "design": design.name(), "frame": frame, "t_ms": t, "paused": false, "speed": "replay",
             "motor_power": self.motor_power, "camera_images": camera_images, "face_mode": self.face_mode,
-            "joints": joints, "leds": leds, "ears": ears, "sensors": sensors, "battery": null,
+            "joints": joints, "leds": leds, "ears": ears, "sensors": sensors, "battery": battery,
         })
     }
 }

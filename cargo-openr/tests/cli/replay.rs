@@ -127,6 +127,14 @@ fn a_recording_replays_what_the_trace_says_at_the_same_virtual_time() {
     let t = times[k];
     let dom = chromium(&format!("{url}?t={t}"), None);
     assert_shows(&dom, &trace, t, "seek");
+    // What the trace lacks comes from view.jsonl: the target, a distance, the battery.
+    let view_rec = read_trace(&rec.join("view.jsonl")).into_iter().filter(|v| v["t_ms"].as_u64().unwrap() <= t).last().expect("a view record by then");
+    let target = view_rec["targets"][LEGS[0]].as_f64().unwrap();
+    assert_eq!(cell(&dom, LEGS[0], "joint-target"), format!("{target:.3}"), "the target at {t} ms");
+    let psd = view_rec["sensors"].as_array().unwrap().iter().find(|s| s["kind"] == "psd").unwrap();
+    let mm = psd["value"].as_f64().unwrap() / 1000.0;
+    assert_eq!(cell(&dom, psd["locator"].as_str().unwrap(), "sensor-value"), format!("{mm:.1} mm"));
+    assert_eq!(text_of_id(&dom, "battery-remaining"), format!("{} %", view_rec["battery"]["remaining_pct"]));
     // The camera picture of the moment: the newest one taken by then, as recorded.
     let n = index.iter().filter(|c| c["t_ms"].as_u64().unwrap() <= t).count();
     assert!(n > 0, "pictures by {t} ms");
@@ -162,14 +170,14 @@ fn recording_at_speed_max_is_the_same_every_run() {
         recs.push(rec);
     }
     let files = |rec: &PathBuf| -> Vec<(String, Vec<u8>)> {
-        let mut names = vec!["recording.json".to_string(), "trace.jsonl".into(), "camera.jsonl".into()];
+        let mut names = vec!["recording.json".to_string(), "trace.jsonl".into(), "view.jsonl".into(), "camera.jsonl".into()];
         for c in read_trace(&rec.join("camera.jsonl")) {
             names.push(c["file"].as_str().unwrap().to_string());
         }
         names.into_iter().map(|n| (n.clone(), std::fs::read(rec.join(&n)).unwrap())).collect()
     };
     let (a, b) = (files(&recs[0]), files(&recs[1]));
-    assert!(a.len() > 20, "pictures recorded: {}", a.len() - 3);
+    assert!(a.len() > 20, "pictures recorded: {}", a.len() - 4);
     assert_eq!(a.len(), b.len(), "as many pictures");
     for ((name, x), (_, y)) in a.iter().zip(&b) {
         assert!(x == y, "{name} differs between two runs at --speed max");
@@ -212,6 +220,7 @@ fn a_trace_alone_replays_without_camera() {
     let dom = chromium(&format!("http://{}/?t={t}", view.addr), None);
     assert_shows(&dom, &trace, t, "trace replay");
     assert!(dom.contains("id=\"camera-box\" hidden"), "no camera panel without pictures");
+    assert_eq!(cell(&dom, LEGS[0], "joint-target"), "–", "no targets in a trace");
     assert!(!dom.contains("id=\"timeline-bar\" hidden"), "the timeline is shown");
 }
 
@@ -270,6 +279,10 @@ fn bad_recordings_are_clear_errors() {
     fails_with(&r, &["trace.jsonl: no trace records"]);
     let r = spoilt("picture", "camera.jsonl", "{\"n\":1,\"t_ms\":40,\"frame\":5,\"file\":\"camera/000009.png\"}\n");
     fails_with(&r, &[&format!("{}:1: the picture", r.join("camera.jsonl").display()), "000009.png is missing"]);
+    let r = spoilt("view", "view.jsonl", "{\"t_ms\":32,\"targets\":{}}\n{\"targets\":{}}\n");
+    fails_with(&r, &[&format!("{}:2: not a view record: it needs \"t_ms\"", r.join("view.jsonl").display())]);
+    let r = spoilt("viewjson", "view.jsonl", "[1,\n");
+    fails_with(&r, &[&format!("{}:1: not a view record", r.join("view.jsonl").display())]);
     let r = spoilt("notrace", "trace.jsonl", "");
     std::fs::remove_file(r.join("trace.jsonl")).unwrap();
     fails_with(&r, &[&format!("{}: no such file or directory", r.join("trace.jsonl").display())]);
