@@ -241,15 +241,20 @@ mod tests {
 
     #[test]
     fn sleepers_wake_when_virtual_time_passes() {
+        // An absolute target, so the sleeper's start (late on a busy machine) cannot
+        // move it past the frames this test runs.
         let c = std::sync::Arc::new(Clock::new(Speed::Max));
         let c2 = c.clone();
-        let t = std::thread::spawn(move || c2.sleep(Duration::from_millis(20)));
-        for _ in 0..3 {
-            std::thread::sleep(Duration::from_millis(5));
-            c.advance();
-        }
-        t.join().unwrap();
-        assert_eq!(c.since_boot(), Duration::from_millis(24));
+        let t = std::thread::spawn(move || {
+            c2.wait_until(Duration::from_millis(20));
+            c2.since_boot()
+        });
+        c.advance();
+        c.advance();
+        std::thread::sleep(Duration::from_millis(20));
+        assert!(!t.is_finished(), "woke at 16 ms of virtual time");
+        c.advance();
+        assert_eq!(t.join().unwrap(), Duration::from_millis(24));
     }
 
     #[test]
