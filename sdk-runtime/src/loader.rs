@@ -28,11 +28,10 @@ pub struct Module {
     pub ocf_name: Option<String>,
 }
 
-// The function pointers are process-wide (objects are never unloaded: the process exits
-// instead); the module's code is only run on
-// its object's thread, but building messages (pure functions) may happen anywhere.
-unsafe impl Send for Module {}
-unsafe impl Sync for Module {}
+// Module is Send and Sync by its fields (fn pointers, Vec, String): the function pointers
+// stay valid process-wide (objects are never unloaded: the process exits instead); the
+// module's code is only run on its object's thread, but building messages (pure
+// functions) may happen anywhere.
 
 const UNDEF: u32 = 0xffff_ffff;
 
@@ -79,10 +78,12 @@ impl Module {
         };
         let sym = |name: &str| -> Option<*mut c_void> {
             let n = CString::new(name).ok()?;
+            // SAFETY: `handle` is dlopen's live handle (never closed while `sym` is used); `n` is a C string.
             let p = unsafe { libc::dlsym(handle, n.as_ptr()) };
             (!p.is_null()).then_some(p)
         };
         let fail = |msg: String| {
+            // SAFETY: `handle` is dlopen's handle; nothing from it is kept after this error return.
             unsafe { libc::dlclose(handle) };
             Err(Error::load(bin, msg))
         };
@@ -96,12 +97,17 @@ impl Module {
             Ok(e) => e,
             Err(m) => return fail(m),
         };
+        // SAFETY: mkbin defines `openr_ocf_name` as a NUL-terminated char array in the object's data.
         let ocf_name = sym("openr_ocf_name").map(|p| unsafe { CStr::from_ptr(p.cast()) }.to_string_lossy().into_owned());
         Ok(Module {
             entries,
+            // SAFETY: the stub's `openr_make_reason_message` has the C signature `MakeReason`.
             make_reason: unsafe { std::mem::transmute::<*mut c_void, MakeReason>(mr) },
+            // SAFETY: the stub's `openr_make_connect_message` has the C signature `MakeConnect`.
             make_connect: unsafe { std::mem::transmute::<*mut c_void, MakeConnect>(mc) },
+            // SAFETY: the stub's `openr_read_status_message` has the C signature `ReadStatus`.
             read_status: unsafe { std::mem::transmute::<*mut c_void, ReadStatus>(rs) },
+            // SAFETY: the stub's `openr_make_power_status_message` has the C signature `MakePower`.
             make_power: sym("openr_make_power_status_message").map(|p| unsafe { std::mem::transmute::<*mut c_void, MakePower>(p) }),
             ocf_name,
         })
@@ -113,15 +119,18 @@ impl Module {
     }
 
     pub fn reason_message(&self, reason: u32) -> Vec<u8> {
+        // SAFETY: `buf` holds `cap` writable bytes (`build`), the stub writes at most `cap`.
         build(|buf, cap| unsafe { (self.make_reason)(reason, buf, cap) })
     }
 
     pub fn connect_message(&self, command: i32, subject_oid: usize, subject_selector: u32, sub_name: &str) -> Vec<u8> {
         let name = CString::new(sub_name).unwrap_or_default();
+        // SAFETY: `name` outlives the call; `buf` holds `cap` writable bytes (`build`).
         build(|buf, cap| unsafe { (self.make_connect)(command, subject_oid as *mut c_void, subject_selector, name.as_ptr(), buf, cap) })
     }
 
     pub fn status_of(&self, reply: &[u8]) -> u32 {
+        // SAFETY: the stub reads at most `reply.len()` bytes of `reply`.
         unsafe { (self.read_status)(reply.as_ptr().cast(), reply.len()) }
     }
 }
@@ -153,6 +162,8 @@ fn read_entry_table(table: *mut c_void) -> std::result::Result<Vec<(u32, EntryFn
     let rows = table.cast::<Row>();
     let mut out = Vec::new();
     for i in 0..4096 {
+        // SAFETY: the object's `{selector, entry}` array ends with an UNDEF row (object model
+        // 5.6), and no row past that one is read. A table without it is read up to 4096 rows.
         let row = unsafe { &*rows.add(i) };
         if row.selector == UNDEF {
             if out.is_empty() {
@@ -163,6 +174,7 @@ fn read_entry_table(table: *mut c_void) -> std::result::Result<Vec<(u32, EntryFn
         if row.entry.is_null() {
             return Err(format!("ObjectEntryTable row {i} (selector {}) has no function", row.selector));
         }
+        // SAFETY: a non-null entry of the table is an `void (*)(void*)` entry function (object model 5.6).
         out.push((row.selector, unsafe { std::mem::transmute::<*mut c_void, EntryFn>(row.entry) }));
     }
     Err("its ObjectEntryTable has no {UNDEF, ENTRY_UNDEF} terminator within 4096 rows".into())

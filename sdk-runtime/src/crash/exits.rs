@@ -16,15 +16,18 @@ use super::out::BUFFER;
 static PID: OnceLock<libc::pid_t> = OnceLock::new();
 
 pub(super) fn remember_pid() {
+    // SAFETY: getpid has no preconditions.
     PID.get_or_init(|| unsafe { libc::getpid() });
 }
 
 fn in_runtime_process() -> bool {
+    // SAFETY: getpid has no preconditions.
     PID.get().is_some_and(|p| *p == unsafe { libc::getpid() })
 }
 
 /// Ends the process now (no atexit handlers, no C++ destructors of running objects).
 pub fn exit_now(code: i32) -> ! {
+    // SAFETY: exit_group has no memory preconditions; it does not return.
     unsafe { libc::syscall(libc::SYS_exit_group, code as libc::c_long) };
     unreachable!("exit_group returned")
 }
@@ -40,13 +43,16 @@ extern "C" {
 pub fn flush_console() {
     let stdout = crate::console::stdout_file();
     for _ in 0..100 {
+        // SAFETY: `stdout` is libc's own `stdout` FILE, valid for the whole process.
         if unsafe { ftrylockfile(stdout) } == 0 {
+            // SAFETY: this thread holds `stdout`'s lock (ftrylockfile returned 0), which funlockfile releases.
             unsafe {
                 fflush_unlocked(stdout);
                 funlockfile(stdout);
             }
             return;
         }
+        // SAFETY: usleep has no memory preconditions.
         unsafe { libc::usleep(1000) };
     }
 }
@@ -57,12 +63,15 @@ pub fn flush_console() {
 /// # Safety
 /// `info` is the handler's siginfo.
 pub unsafe fn fault_note_from(sig: i32, info: *const libc::siginfo_t) -> Option<*const libc::c_char> {
+    // SAFETY: `info` is non-null and is the handler's siginfo (this function's contract).
     if sig != libc::SIGBUS || info.is_null() || unsafe { (*info).si_code } != libc::SI_QUEUE {
         return None;
     }
+    // SAFETY: `info` is the handler's siginfo (checked non-null above); getpid has no preconditions.
     if unsafe { (*info).si_pid() } != unsafe { libc::getpid() } {
         return None;
     }
+    // SAFETY: a SI_QUEUE siginfo carries `si_value` (the sender's `sigqueue` argument).
     let p = unsafe { (*info).si_value().sival_ptr } as *const libc::c_char;
     (!p.is_null()).then_some(p)
 }
@@ -101,6 +110,7 @@ type CreateFn = unsafe extern "C" fn(*mut libc::pthread_t, *const libc::pthread_
 
 fn real_pthread_create() -> CreateFn {
     static REAL: OnceLock<usize> = OnceLock::new();
+    // SAFETY: a NUL-terminated name.
     let p = *REAL.get_or_init(|| unsafe { libc::dlsym(libc::RTLD_NEXT, c"pthread_create".as_ptr()) } as usize);
     assert!(p != 0, "libc's pthread_create not found");
     // SAFETY: libc's pthread_create has this signature.
@@ -134,12 +144,16 @@ pub unsafe extern "C" fn pthread_create(thread: *mut libc::pthread_t, attr: *con
     match from_object {
         Some(slot) => {
             let boxed = Box::into_raw(Box::new(Adopted { slot, start, arg }));
+            // SAFETY: the caller's arguments (pthread_create's contract); `boxed` is a live Box that
+            // `adopted_start` takes ownership of on the new thread.
             let r = unsafe { real(thread, attr, adopted_start, boxed.cast()) };
             if r != 0 {
+                // SAFETY: the thread was not created, so `boxed` was never taken: it is freed once, here.
                 drop(unsafe { Box::from_raw(boxed) });
             }
             r
         }
+        // SAFETY: the caller's arguments, passed on unchanged (pthread_create's contract).
         None => unsafe { real(thread, attr, start, arg) },
     }
 }

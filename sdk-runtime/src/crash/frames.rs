@@ -28,6 +28,7 @@ struct Symboliser {
 struct Actions(libc::posix_spawn_file_actions_t);
 // SAFETY: built once, then only read (by posix_spawn).
 unsafe impl Send for Actions {}
+// SAFETY: as for Send: posix_spawn only reads the actions, never changes them.
 unsafe impl Sync for Actions {}
 
 static ADDR2LINE: OnceLock<Option<Symboliser>> = OnceLock::new();
@@ -37,10 +38,13 @@ fn symboliser() -> Option<Symboliser> {
     let found = explicit.or_else(|| std::env::split_paths(&std::env::var_os("PATH")?).map(|d| d.join("addr2line")).find(|p| p.is_file()))?;
     let path = CString::new(found.into_os_string().into_encoded_bytes()).ok()?;
     let mut pipe = [0; 2];
+    // SAFETY: `pipe` is a writable array of two fds.
     if unsafe { libc::pipe2(pipe.as_mut_ptr(), libc::O_CLOEXEC | libc::O_NONBLOCK) } != 0 {
         return None;
     }
+    // SAFETY: posix_spawn_file_actions_t is plain C data, all-zero before its init.
     let mut actions: libc::posix_spawn_file_actions_t = unsafe { std::mem::zeroed() };
+    // SAFETY: `actions` is a live local, initialised before it is added to; the path is a C string.
     unsafe {
         libc::posix_spawn_file_actions_init(&mut actions);
         libc::posix_spawn_file_actions_adddup2(&mut actions, pipe[1], 1);
@@ -53,6 +57,8 @@ fn symboliser() -> Option<Symboliser> {
 pub fn warm_up() {
     ADDR2LINE.get_or_init(symboliser);
     let mut n = 0;
+    // SAFETY: the crate's lock is skipped (a handler must not block on it); the walk itself is
+    // libgcc's `_Unwind_Backtrace`, safe to run on several threads at once.
     unsafe { backtrace::trace_unsynchronized(|_| {
         n += 1;
         n < 4
@@ -64,6 +70,7 @@ pub fn warm_up() {
 pub fn collect(pc: usize) -> ([usize; MAX_FRAMES], usize) {
     let mut ips = [0usize; MAX_FRAMES];
     let mut n = 0;
+    // SAFETY: as in `warm_up`; the callback stays within `ips` (it stops at MAX_FRAMES).
     unsafe {
         backtrace::trace_unsynchronized(|f| {
             ips[n] = f.ip() as usize;
@@ -87,7 +94,9 @@ pub struct Place {
 }
 
 pub fn place(addr: usize) -> Option<Place> {
+    // SAFETY: Dl_info is plain C data (pointers and null pointers).
     let mut info: libc::Dl_info = unsafe { std::mem::zeroed() };
+    // SAFETY: `info` is a writable Dl_info; dladdr accepts any address.
     (unsafe { libc::dladdr(addr as *const c_void, &mut info) } != 0).then_some(Place { info })
 }
 
@@ -99,6 +108,8 @@ impl Place {
 
     /// A module of the system (glibc, libstdc++…): no debug info to look up.
     fn is_system_library(&self) -> bool {
+        // SAFETY: a `Place` comes from a successful dladdr, whose `dli_fname` is the module's C string
+        // (modules are never unloaded).
         let name = unsafe { std::ffi::CStr::from_ptr(self.info.dli_fname) }.to_bytes();
         name.starts_with(b"/lib") || name.starts_with(b"/usr/lib")
     }
@@ -110,6 +121,7 @@ pub fn write_frame(out: &mut Out, i: usize, ip: usize, lookup_lines: bool) {
     match place(ip) {
         Some(p) => {
             if !p.info.dli_sname.is_null() {
+                // SAFETY: `dli_sname` is non-null: the symbol's C string in the loaded module.
                 let bytes = unsafe { std::ffi::CStr::from_ptr(p.info.dli_sname) }.to_bytes();
                 let _ = write!(out, " {:#}+{:#x}", backtrace::SymbolName::new(bytes), ip - p.info.dli_saddr as usize);
             }
@@ -150,15 +162,19 @@ fn source_line(out: &mut Out, p: &Place, offset: usize, named: bool) {
     let mut pid = 0;
     // glibc's posix_spawn: clone(CLONE_VM|CLONE_VFORK) on an mmap'ed stack, no malloc
     // and no fork handlers; the file actions were built at install.
+    // SAFETY: argv and envp are null-terminated arrays of C strings that outlive the call;
+    // `actions` was initialised at install.
     let spawned = unsafe { libc::posix_spawn(&mut pid, argv[0], &tool.actions.0, std::ptr::null(), argv.as_ptr().cast(), envp.as_ptr().cast()) };
     if spawned != 0 {
         return;
     }
+    // SAFETY: waitpid on our own child, no status buffer.
     unsafe { libc::waitpid(pid, std::ptr::null_mut(), 0) };
     // The answer waits in the pipe (far less than its 64 KiB); the read end is non-blocking.
     let mut answer = [0u8; 2048];
     let mut len = 0;
     while len < answer.len() {
+        // SAFETY: the read is bounded to the unused tail of `answer`.
         let n = unsafe { libc::read(tool.pipe[0], answer[len..].as_mut_ptr().cast(), answer.len() - len) };
         if n <= 0 {
             break;
