@@ -10,9 +10,11 @@ pub fn write(bytes: &[u8]) {
     let _guard = LOCK.lock().unwrap_or_else(|p| p.into_inner());
     // Flush what C stdio (printf/cout of objects) buffered for the console first, so
     // order is kept; other streams (objects' open files) are not the console's business.
+    // SAFETY: `stdout_file` is glibc's live `stdout` stream.
     unsafe { libc::fflush(stdout_file()) };
     let mut rest = bytes;
     while !rest.is_empty() {
+        // SAFETY: `rest` is a live slice: write reads at most its length.
         let n = unsafe { libc::write(1, rest.as_ptr().cast(), rest.len()) };
         if n <= 0 {
             if std::io::Error::last_os_error().kind() == std::io::ErrorKind::Interrupted {
@@ -56,15 +58,19 @@ pub mod input {
 
     /// Puts the never-ending pipe on fd 0 (once per process; not for a terminal).
     pub fn take_over_stdin() {
+        // SAFETY: isatty takes any fd.
         if unsafe { libc::isatty(0) } == 1 || TAKEN.swap(true, Ordering::AcqRel) {
             return;
         }
+        // SAFETY: fcntl(F_DUPFD_CLOEXEC) on fd 0 touches no memory.
         let real = unsafe { libc::fcntl(0, libc::F_DUPFD_CLOEXEC, 3) };
         let mut p = [0; 2];
+        // SAFETY: `p` is a writable array of two fds; dup2 takes any fds.
         if unsafe { libc::pipe2(p.as_mut_ptr(), libc::O_CLOEXEC) } != 0 || unsafe { libc::dup2(p[0], 0) } < 0 {
             TAKEN.store(false, Ordering::Release);
             return;
         }
+        // SAFETY: `p[0]` is the pipe's read end, now also fd 0: closing this copy only.
         unsafe { libc::close(p[0]) };
         let write_end = p[1];
         if real < 0 {
@@ -77,6 +83,7 @@ pub mod input {
     fn pump(real: i32, pipe: i32) {
         let mut buf = [0u8; 4096];
         loop {
+            // SAFETY: the read is bounded by `buf`'s length.
             let n = unsafe { libc::read(real, buf.as_mut_ptr().cast(), buf.len()) };
             if n < 0 && std::io::Error::last_os_error().kind() == std::io::ErrorKind::Interrupted {
                 continue;
@@ -86,6 +93,7 @@ pub mod input {
             }
             let mut rest = &buf[..n as usize];
             while !rest.is_empty() {
+                // SAFETY: `rest` is a live slice: write reads at most its length.
                 let w = unsafe { libc::write(pipe, rest.as_ptr().cast(), rest.len()) };
                 if w <= 0 {
                     if std::io::Error::last_os_error().kind() == std::io::ErrorKind::Interrupted {
@@ -96,11 +104,13 @@ pub mod input {
                 rest = &rest[w as usize..];
             }
         }
+        // SAFETY: `real` is the pump's own dup of stdin, closed once, here.
         unsafe { libc::close(real) };
     }
 
     /// Called on each object's thread before it runs object code.
     pub fn register_thread(index: usize) {
+        // SAFETY: gettid has no preconditions.
         let tid = unsafe { libc::gettid() };
         let mut t = TIDS.lock().unwrap_or_else(|p| p.into_inner());
         if !t.iter().any(|(i, _)| *i == index) {
@@ -122,6 +132,7 @@ pub mod input {
     /// Bytes waiting in the console pipe.
     fn pending_input() -> i32 {
         let mut n: libc::c_int = 0;
+        // SAFETY: FIONREAD writes one c_int, into the live `n`.
         if unsafe { libc::ioctl(0, libc::FIONREAD, &mut n) } != 0 {
             return 0;
         }

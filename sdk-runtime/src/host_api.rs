@@ -92,6 +92,7 @@ fn set_errno(e: i32) {
 }
 
 pub(crate) unsafe fn map_path(path: *const c_char, create: i32, out: *mut c_char, len: usize) -> i32 {
+    // SAFETY: `path` is the object's C string or null (the host API's contract).
     let (Some(rt), Some(path)) = (rt(), unsafe { cstr(path) }) else {
         set_errno(libc::ENOENT);
         return -1;
@@ -146,6 +147,7 @@ pub(crate) fn self_name() -> *const c_char {
 
 pub(crate) unsafe fn send(dest: *mut c_void, selector: u32, msg: *const c_void, size: usize) -> i32 {
     let Some(rt) = rt() else { return -1 };
+    // SAFETY: `msg` holds `size` readable bytes or is null (the host API's contract); copied at once.
     let data = unsafe { bytes(msg, size) }.to_vec();
     match rt.send(dest as usize, selector, data) {
         Ok(()) => 0,
@@ -155,6 +157,7 @@ pub(crate) unsafe fn send(dest: *mut c_void, selector: u32, msg: *const c_void, 
 
 pub(crate) unsafe fn call(dest: *mut c_void, selector: u32, msg: *const c_void, size: usize, reply: *mut c_void, cap: usize, got: *mut usize, timeout_ms: u32) -> i32 {
     let Some(rt) = rt() else { return -1 };
+    // SAFETY: `msg` holds `size` readable bytes or is null (the host API's contract); copied at once.
     let data = unsafe { bytes(msg, size) }.to_vec();
     let timeout = (timeout_ms > 0).then(|| Duration::from_millis(timeout_ms.into()));
     match rt.call(dest as usize, selector, data, timeout) {
@@ -177,6 +180,7 @@ pub(crate) unsafe fn call(dest: *mut c_void, selector: u32, msg: *const c_void, 
 }
 
 pub(crate) unsafe fn reply(msg: *const c_void, size: usize) -> i32 {
+    // SAFETY: `msg` holds `size` readable bytes or is null (the host API's contract), read before return.
     if object::reply_current(unsafe { bytes(msg, size) }) {
         0
     } else {
@@ -185,6 +189,7 @@ pub(crate) unsafe fn reply(msg: *const c_void, size: usize) -> i32 {
 }
 
 pub(crate) unsafe fn register_service(name: *const c_char, oid: *mut c_void, selector: u32) -> i32 {
+    // SAFETY: `name` is the object's C string or null (the host API's contract).
     let (Some(rt), Some(name)) = (rt(), unsafe { cstr(name) }) else { return 1 };
     if rt.register(name, oid as usize, selector) {
         0
@@ -200,6 +205,7 @@ pub(crate) fn unregister_services() {
 }
 
 pub(crate) unsafe fn console_write(text: *const c_char, len: usize) {
+    // SAFETY: `text` holds `len` readable bytes or is null (the host API's contract), read before return.
     crate::console::write(unsafe { bytes(text.cast(), len) });
 }
 
@@ -319,6 +325,7 @@ pub(crate) fn robot_design() -> *const c_char {
 }
 
 pub(crate) unsafe fn find_design_data(keyword: *const c_char, id: *mut u32, data: *mut *mut c_void, size: *mut usize) -> u32 {
+    // SAFETY: `keyword` is the object's C string or null (the host API's contract).
     let (Some(rt), Some(key)) = (rt(), unsafe { cstr(keyword) }) else { return crate::design::O_FAIL };
     match crate::design::find(rt, key) {
         Ok((mem_id, base, n)) => {
@@ -346,6 +353,7 @@ pub(crate) fn delete_design_data(id: u32) -> u32 {
 
 pub(crate) unsafe fn set_timer(dest: *mut c_void, selector: u32, msg: *const c_void, size: usize, after_ms: u32, period_ms: u32) -> u32 {
     let Some(rt) = rt() else { return 0 };
+    // SAFETY: `msg` holds `size` readable bytes or is null (the host API's contract); copied at once.
     let data = unsafe { bytes(msg, size) }.to_vec();
     let period = (period_ms > 0).then(|| Duration::from_millis(period_ms.into()));
     rt.timers.add(rt.clock.since_boot(), dest as usize, selector, data, Duration::from_millis(after_ms.into()), period)

@@ -62,6 +62,8 @@ pub fn install() {
     frames::warm_up();
     exits::remember_pid();
     std::hint::black_box(exits::keep());
+    // SAFETY: sigaction is plain C data (all-zero: no flags, empty mask); `on_fault` has the
+    // SA_SIGINFO handler signature, and only writes what allocates nothing.
     unsafe {
         let mut sa: libc::sigaction = std::mem::zeroed();
         sa.sa_sigaction = on_fault as *const () as usize;
@@ -80,6 +82,7 @@ pub fn install() {
 pub fn arm_thread() {
     let mem = vec![0u8; ALT_STACK].leak();
     let st = libc::stack_t { ss_sp: mem.as_mut_ptr().cast(), ss_flags: 0, ss_size: ALT_STACK };
+    // SAFETY: `st` describes a leaked (never freed) buffer of ALT_STACK bytes.
     unsafe { libc::sigaltstack(&st, std::ptr::null_mut()) };
     STACK.with(|s| s.set(stack_bounds()));
     if FP_TRAPS.load(Ordering::Acquire) {
@@ -88,6 +91,8 @@ pub fn arm_thread() {
 }
 
 fn stack_bounds() -> (usize, usize) {
+    // SAFETY: pthread_attr_t is filled by pthread_getattr_np before it is read, and destroyed once;
+    // the out-pointers are live locals.
     unsafe {
         let mut attr: libc::pthread_attr_t = std::mem::zeroed();
         if libc::pthread_getattr_np(libc::pthread_self(), &mut attr) != 0 {
@@ -113,6 +118,8 @@ fn enable_fp_traps() {
     const FE_DIVBYZERO: libc::c_int = 0x04;
     const FE_OVERFLOW: libc::c_int = 0x08;
     const MXCSR_DM: u32 = 1 << 8;
+    // SAFETY: FP exception masks only change how this thread's FP faults; stmxcsr/ldmxcsr
+    // read/write the 4-byte `csr` local and no stack.
     unsafe {
         feenableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
         let mut csr: u32 = 0;
@@ -139,14 +146,20 @@ extern "C" fn on_fault(sig: libc::c_int, info: *mut libc::siginfo_t, ctx: *mut c
     let Some(mut out) = BUFFER.claim() else {
         // Another thread is reporting; it ends the process.
         loop {
+            // SAFETY: pause has no preconditions.
             unsafe { libc::pause() };
         }
     };
+    // SAFETY: alarm has no preconditions.
     unsafe { libc::alarm(10) };
     let uc = ctx as *const libc::ucontext_t;
+    // SAFETY: `uc` is non-null: the kernel's ucontext for this SA_SIGINFO handler.
     let pc = if uc.is_null() { 0 } else { unsafe { (*uc).uc_mcontext.gregs[libc::REG_RIP as usize] as usize } };
+    // SAFETY: `uc` and its `fpregs` are null or the kernel's valid signal context.
     let mxcsr = unsafe { uc.as_ref().and_then(|u| u.uc_mcontext.fpregs.as_ref()).map(|f| f.mxcsr) };
+    // SAFETY: `info` is non-null: the kernel's siginfo for this handler.
     let (code, addr) = if info.is_null() { (0, 0) } else { unsafe { ((*info).si_code, (*info).si_addr() as usize) } };
+    // SAFETY: `info` is this handler's siginfo (or null), `fault_note_from`'s contract.
     let note = unsafe { fault_note_from(sig, info) };
     let stack = STACK.with(|s| s.get());
     let overflow = sig == libc::SIGSEGV && stack.0 != 0 && addr < stack.0 + 4096 && addr + (1 << 20) > stack.0;

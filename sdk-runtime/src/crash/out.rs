@@ -52,8 +52,10 @@ impl core::fmt::Write for Out {
 /// `write(2)` until done (async-signal-safe).
 pub fn write_all(fd: i32, mut bytes: &[u8]) {
     while !bytes.is_empty() {
+        // SAFETY: `bytes` is a live slice: write reads at most its length.
         let n = unsafe { libc::write(fd, bytes.as_ptr().cast(), bytes.len()) };
         if n <= 0 {
+            // SAFETY: __errno_location returns this thread's errno, always valid.
             if n < 0 && unsafe { *libc::__errno_location() } == libc::EINTR {
                 continue;
             }
@@ -71,6 +73,7 @@ impl core::fmt::Display for CText {
         if self.0.is_null() {
             return f.write_str("??");
         }
+        // SAFETY: `self.0` is non-null: a NUL-terminated C string (`CText`'s contract).
         let bytes = unsafe { std::ffi::CStr::from_ptr(self.0) }.to_bytes();
         for chunk in bytes.utf8_chunks() {
             f.write_str(chunk.valid())?;
