@@ -127,6 +127,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     crate::crash::install();
     crate::crash::set_fp_traps(opts.fp_traps);
     // Objects' printf/cout go through C stdio: line-buffer it like a console.
+    // SAFETY: `stdout_file` is glibc's live `stdout`; nothing has written to it yet (setvbuf's rule).
     unsafe { libc::setvbuf(crate::console::stdout_file(), std::ptr::null_mut(), libc::_IOLBF, 0) };
     std::hint::black_box(crate::host_api::api_table());
     std::hint::black_box(crate::interpose::keep());
@@ -216,6 +217,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     }
     rt.vr.peers.close_all(&format!("the run ended ({ended:?})"));
     // stdout only: fflush(NULL) would wait for stdin's lock, held by a blocked reader.
+    // SAFETY: `stdout_file` is glibc's live `stdout` stream.
     unsafe { libc::fflush(crate::console::stdout_file()) };
     let load = |c: &std::sync::atomic::AtomicU64| c.load(std::sync::atomic::Ordering::Relaxed);
     Ok(Outcome { ended, failures: failures.0, frames: load(&rt.vr.frames), late_frames: load(&rt.vr.late_frames) })
@@ -276,6 +278,7 @@ fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path
 fn name_thread(name: &str) {
     let short: String = name.chars().take(15).collect();
     if let Ok(c) = CString::new(short) {
+        // SAFETY: `c` is a C string of at most 15 bytes (the kernel's limit), for this very thread.
         unsafe { libc::pthread_setname_np(libc::pthread_self(), c.as_ptr()) };
     }
 }
@@ -334,6 +337,8 @@ pub fn update_power(rt: &Runtime, change: impl FnOnce(&mut PowerState)) {
     for o in observers {
         let Some(slot) = rt.object(o.oid) else { continue };
         let Some(make) = slot.module.get().and_then(|m| m.make_power) else { continue };
+        // SAFETY: the object's power builder reads one PowerState (live for the call) and writes at
+        // most `cap` bytes into `buf` (`build`).
         let msg = loader::build(|buf, cap| unsafe { make((&state as *const PowerState).cast(), buf, cap) });
         let _ = rt.send(o.oid, o.selector, msg);
     }

@@ -8,6 +8,7 @@ type CxaDemangle = unsafe extern "C" fn(*const c_char, *mut c_char, *mut usize, 
 
 fn cxa_demangle() -> Option<CxaDemangle> {
     static FN: OnceLock<usize> = OnceLock::new();
+    // SAFETY: C string names; the handle is kept open for the process (never dlclosed).
     let p = *FN.get_or_init(|| unsafe {
         let lib = libc::dlopen(c"libstdc++.so.6".as_ptr(), libc::RTLD_LAZY | libc::RTLD_LOCAL);
         if lib.is_null() {
@@ -34,6 +35,7 @@ pub fn demangle(symbol: &str) -> Option<String> {
     }
     // SAFETY: on success the result is a NUL-terminated malloc'd string we now own.
     let s = unsafe { CStr::from_ptr(out) }.to_string_lossy().into_owned();
+    // SAFETY: `out` is __cxa_demangle's malloc'd result, no longer used.
     unsafe { libc::free(out.cast()) };
     (status == 0).then_some(s)
 }

@@ -102,6 +102,8 @@ pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(
         // Keep a little slack after the message: C++ code may read a struct slightly
         // larger than what a short sender wrote.
         env.data.resize(env.data.len() + 64, 0);
+        // SAFETY: `entry` is a function of the object's ObjectEntryTable (`void (*)(void*)`), given the
+        // message bytes plus 64 bytes of slack, live for the call.
         unsafe { entry(env.data.as_mut_ptr().cast()) };
         RUNNING.with(|r| r.set((slot.index, u32::MAX)));
         crate::console::input::handled(slot.index);

@@ -51,6 +51,7 @@ fn dlopen(path: &Path, flags: libc::c_int) -> std::io::Result<Opened> {
     }
     // SAFETY: dlerror's string is valid until the next dl* call; copied at once.
     let err = unsafe { libc::dlerror() };
+    // SAFETY: `err` is non-null: dlerror's C string, copied before any other dl* call.
     let text = if err.is_null() { "unknown dlopen error".into() } else { unsafe { CStr::from_ptr(err) }.to_string_lossy().into_owned() };
     Ok(Err(text))
 }
@@ -59,6 +60,7 @@ fn dlopen(path: &Path, flags: libc::c_int) -> std::io::Result<Opened> {
 fn memory_file(name: &str, elf: &[u8]) -> std::io::Result<PathBuf> {
     const MFD_EXEC: libc::c_uint = 0x10; // Linux 6.3+: executable even where the default is not
     let cname = CString::new(name).map_err(|_| std::io::ErrorKind::InvalidInput)?;
+    // SAFETY: `cname` is a C string that outlives the closure.
     let create = |flags| unsafe { libc::memfd_create(cname.as_ptr(), flags) };
     let mut fd = create(libc::MFD_CLOEXEC | MFD_EXEC);
     if fd < 0 && std::io::Error::last_os_error().raw_os_error() == Some(libc::EINVAL) {

@@ -10,7 +10,8 @@ struct Region {
     refs: usize,
 }
 
-// The raw pointer is only handed out, never dereferenced here.
+// SAFETY: `base` is a calloc'd block owned by the table (freed only by `unref`, under its
+// lock); it is only handed out, never dereferenced here, so it may move between threads.
 unsafe impl Send for Region {}
 
 pub struct ShmTable {
@@ -24,6 +25,7 @@ impl ShmTable {
 
     /// Allocates `size` zeroed bytes (16-byte aligned) with one reference.
     pub fn alloc(&self, size: usize) -> Option<(u32, *mut u8)> {
+        // SAFETY: calloc with a non-zero size; null is checked below.
         let base = unsafe { libc::calloc(1, size.max(1)) }.cast::<u8>();
         if base.is_null() {
             return None;
@@ -56,6 +58,7 @@ impl ShmTable {
             return false;
         }
         let r = g.1.remove(&id).expect("present");
+        // SAFETY: `r` was the last reference to its calloc'd block, just removed from the table: freed once.
         unsafe { libc::free(r.base.cast()) };
         true
     }

@@ -11,6 +11,8 @@ pub struct Termination {
 
 /// Blocks SIGINT/SIGTERM/SIGHUP/SIGUSR1 for this thread and every thread it creates later.
 pub fn block_termination() -> Result<Termination> {
+    // SAFETY: sigset_t is plain C data, initialised by sigemptyset before use; the mask change
+    // is this thread's own.
     unsafe {
         let mut set: libc::sigset_t = std::mem::zeroed();
         libc::sigemptyset(&mut set);
@@ -28,6 +30,7 @@ impl Termination {
     /// Waits up to `d` for one of the blocked signals.
     pub fn wait(&self, d: Duration) -> Option<i32> {
         let ts = libc::timespec { tv_sec: d.as_secs() as libc::time_t, tv_nsec: d.subsec_nanos() as libc::c_long };
+        // SAFETY: `self.set` is an initialised sigset; `ts` lives for the call; no siginfo is asked for.
         let sig = unsafe { libc::sigtimedwait(&self.set, std::ptr::null_mut(), &ts) };
         (sig > 0).then_some(sig)
     }
