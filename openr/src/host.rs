@@ -8,6 +8,7 @@ use crate::abi::{self, openr_host_api, OServiceEntry};
 struct Api(&'static openr_host_api);
 // SAFETY: the table is immutable and lives as long as the process.
 unsafe impl Send for Api {}
+// SAFETY: as for Send: the table is never written after the runtime built it.
 unsafe impl Sync for Api {}
 
 /// The runtime's table, `None` when the object runs outside cargo-openr.
@@ -20,9 +21,15 @@ pub(crate) fn api() -> Option<&'static openr_host_api> {
         if p.is_null() {
             return None;
         }
-        let table = unsafe { &*(p as *const openr_host_api) };
-        (table.abi_version == abi::HOST_ABI_VERSION && table.size as usize >= std::mem::size_of::<openr_host_api>())
-            .then_some(Api(table))
+        let table = p as *const openr_host_api;
+        // SAFETY: every version of the table starts with these two u32s; only they are read
+        // before the size is known (a reference to the whole struct could overrun an older one).
+        let (version, size) = unsafe { ((*table).abi_version, (*table).size) };
+        if version != abi::HOST_ABI_VERSION || (size as usize) < std::mem::size_of::<openr_host_api>() {
+            return None;
+        }
+        // SAFETY: the table holds at least a whole `openr_host_api`, never written again.
+        Some(Api(unsafe { &*table }))
     })
     .as_ref()
     .map(|a| a.0)
@@ -34,12 +41,14 @@ extern "C" {
 
 unsafe fn libc_dlsym(name: &CStr) -> *mut c_void {
     // RTLD_DEFAULT is ((void*)0) on glibc.
+    // SAFETY: `name` is a C string; a null handle is RTLD_DEFAULT.
     unsafe { dlsym(std::ptr::null_mut(), name.as_ptr()) }
 }
 
 /// The calling object's OID address.
 pub(crate) fn self_oid() -> *mut c_void {
     match api() {
+        // SAFETY: the runtime's `self_oid` takes no arguments (a checked, live table).
         Some(a) => unsafe { (a.self_oid)() },
         None => std::ptr::null_mut(),
     }
@@ -85,11 +94,13 @@ pub(crate) fn call<T: Copy, R: Copy>(dest: OServiceEntry, msg: &T, timeout_ms: u
 pub(crate) fn register_service(name: &str, selector: u32) -> i32 {
     let Some(a) = api() else { return -1 };
     let Ok(c) = std::ffi::CString::new(name) else { return -1 };
+    // SAFETY: `c` is a C string that outlives the call; the runtime copies the name.
     unsafe { (a.register_service)(c.as_ptr(), self_oid(), selector) }
 }
 
 pub(crate) fn unregister_services() {
     if let Some(a) = api() {
+        // SAFETY: the runtime's `unregister_services` takes no arguments.
         unsafe { (a.unregister_services)() };
     }
 }
@@ -97,6 +108,7 @@ pub(crate) fn unregister_services() {
 /// Writes to the console in one piece (stdout without a runtime).
 pub(crate) fn console_write(text: &[u8]) {
     match api() {
+        // SAFETY: `text` is a live slice of `len` bytes; the runtime writes it out before returning.
         Some(a) => unsafe { (a.console_write)(text.as_ptr().cast(), text.len()) },
         None => {
             use std::io::Write;
@@ -110,6 +122,7 @@ pub(crate) fn console_write(text: &[u8]) {
 pub(crate) fn shm_alloc(size: usize) -> Option<(u32, *mut u8)> {
     let a = api()?;
     let mut id = 0;
+    // SAFETY: `id` is a live u32 the runtime writes.
     let p = unsafe { (a.shm_alloc)(size, &mut id) };
     (!p.is_null()).then_some((id, p.cast()))
 }
@@ -117,18 +130,21 @@ pub(crate) fn shm_alloc(size: usize) -> Option<(u32, *mut u8)> {
 pub(crate) fn shm_base(id: u32) -> Option<(*mut u8, usize)> {
     let a = api()?;
     let mut size = 0;
+    // SAFETY: `size` is a live usize the runtime writes.
     let p = unsafe { (a.shm_base)(id, &mut size) };
     (!p.is_null()).then_some((p.cast(), size))
 }
 
 pub(crate) fn shm_ref(id: u32) {
     if let Some(a) = api() {
+        // SAFETY: any id is accepted (an unknown one is ignored by the runtime).
         unsafe { (a.shm_ref)(id) };
     }
 }
 
 pub(crate) fn shm_unref(id: u32) {
     if let Some(a) = api() {
+        // SAFETY: any id is accepted (an unknown one is ignored by the runtime).
         unsafe { (a.shm_unref)(id) };
     }
 }

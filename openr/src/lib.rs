@@ -94,6 +94,7 @@ pub mod __glue {
     /// `buf` is NULL or has `cap` writable bytes.
     pub unsafe fn make_reason(reason: u32, buf: *mut c_void, cap: usize) -> usize {
         let m = OReasonMessage { msg_type: abi::OMSG_REASON, reason, param_size: 0, param: [0; 128] };
+        // SAFETY: `buf` is NULL or has `cap` writable bytes (this function's contract, as `put`'s).
         unsafe { put(&m, buf, cap) }
     }
 
@@ -105,6 +106,7 @@ pub mod __glue {
             // SAFETY: a C string per the contract.
             abi::set_name(&mut m.sub_name, unsafe { CStr::from_ptr(name) }.to_bytes());
         }
+        // SAFETY: `buf` is NULL or has `cap` writable bytes (this function's contract, as `put`'s).
         unsafe { put(&m, buf, cap) }
     }
 
@@ -206,15 +208,19 @@ mod tests {
     fn glue_builds_and_reads_the_cxx_layouts() {
         let mut buf = [0u8; 256];
         let name = c"A.B.c.S";
+        // SAFETY: `name` is a C string; `buf` has `buf.len()` writable bytes.
         let n = unsafe { __glue::make_connect(0, 0x8000_0040usize as *mut _, 9, name.as_ptr(), buf.as_mut_ptr().cast(), buf.len()) };
         assert_eq!(n, 152);
         assert_eq!(&buf[0..4], &abi::OMSG_CONNECT.to_ne_bytes());
         assert_eq!(&buf[8..16], &0x8000_0040usize.to_ne_bytes());
         assert_eq!(&buf[16..20], &9u32.to_ne_bytes());
         assert_eq!(&buf[24..32], b"A.B.c.S\0");
+        // SAFETY: `buf` has at least the 10 writable bytes claimed.
         assert_eq!(unsafe { __glue::make_reason(0, buf.as_mut_ptr().cast(), 10) }, 0, "too small");
         let status = [2u32.to_ne_bytes(), 6u32.to_ne_bytes()].concat();
+        // SAFETY: `status` has the 8 readable bytes claimed.
         assert_eq!(unsafe { __glue::read_status(status.as_ptr().cast(), 8) }, 6);
+        // SAFETY: `status` has the 4 readable bytes claimed.
         assert_eq!(unsafe { __glue::read_status(status.as_ptr().cast(), 4) }, abi::O_FAIL);
     }
 }

@@ -319,6 +319,7 @@ fn with_context<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
 /// # Safety
 /// `msg` points to the message for selector `sel`, as the runtime delivers it.
 pub unsafe fn dispatch<T: Object>(sel: u32, msg: *mut c_void) {
+    // SAFETY: `msg` is the message for `sel` (this function's contract, passed on).
     let run = std::panic::AssertUnwindSafe(|| unsafe { dispatch_inner::<T>(sel, msg) });
     if std::panic::catch_unwind(run).is_err() {
         // A panic is the Rust object's crash: the runtime's crash report names the

@@ -45,9 +45,11 @@ impl Payload for str {
 pub unsafe trait Plain: Copy + 'static {}
 
 macro_rules! plain {
+    // SAFETY: primitive integers and floats: no padding, no pointers, every bit pattern valid.
     ($($t:ty),*) => { $(unsafe impl Plain for $t {})* };
 }
 plain!(u8, i8, u16, i16, u32, i32, u64, i64, f32, f64);
+// SAFETY: an array of plain elements has no padding between them and no other content.
 unsafe impl<T: Plain, const N: usize> Plain for [T; N] {}
 
 impl<T: Plain> Payload for T {

@@ -57,6 +57,7 @@ pub fn open_primitive(locator: &str) -> Result<PrimitiveId> {
 
 /// `OPENR::ClosePrimitive(id)`.
 pub fn close_primitive(id: PrimitiveId) -> Result<()> {
+    // SAFETY: any id is accepted (an unknown one is an error status).
     check(unsafe { (api()?.close_primitive)(id.0) })
 }
 
@@ -69,12 +70,14 @@ pub fn set_motor_power(on: bool) -> Result<()> {
 
 /// `OPENR::Shutdown()`: begins the Stop/Destroy sequence.
 pub fn shutdown() -> Result<()> {
+    // SAFETY: `shutdown` takes no arguments.
     unsafe { (api()?.shutdown)() };
     Ok(())
 }
 
 /// `OPENR::GetRobotDesign`: "ERS-7" etc.
 pub fn robot_design() -> Result<String> {
+    // SAFETY: `robot_design` takes no arguments.
     let p = unsafe { (api()?.robot_design)() };
     if p.is_null() {
         return Err(OStatus::FAIL);
@@ -159,6 +162,7 @@ fn le_u16(b: &[u8], o: usize) -> u16 {
 /// `OPENR::GetJointValue(id, &v)`.
 pub fn joint_value(id: PrimitiveId) -> Result<JointValue> {
     let mut b = [0u8; 16];
+    // SAFETY: `b` is 16 writable bytes, the `value16` the table's `joint_value` fills.
     check(unsafe { (api()?.joint_value)(id.0, b.as_mut_ptr().cast()) })?;
     Ok(JointValue {
         value_urad: le_i32(&b, 0),
@@ -172,6 +176,7 @@ pub fn joint_value(id: PrimitiveId) -> Result<JointValue> {
 /// `OPENR::GetSensorValue(id, &v)`.
 pub fn sensor_value(id: PrimitiveId) -> Result<SensorValue> {
     let mut b = [0u8; 16];
+    // SAFETY: `b` is 16 writable bytes, the `value16` the table's `sensor_value` fills.
     check(unsafe { (api()?.sensor_value)(id.0, b.as_mut_ptr().cast()) })?;
     Ok(SensorValue { value: le_i32(&b, 0), signal: le_u16(&b, 4) })
 }
