@@ -132,6 +132,7 @@ fn lock(parent: &Path, prefix: &Path) -> Result<fs::File, Error> {
     let name = prefix.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     let path = parent.join(format!(".{name}.lock"));
     let f = fs::OpenOptions::new().create(true).truncate(false).write(true).open(&path).map_err(|e| Error::io(&path, e))?;
+    // SAFETY: `f` is an open file; flock touches no memory.
     if unsafe { libc::flock(f.as_raw_fd(), libc::LOCK_EX) } != 0 {
         return Err(Error::io(&path, std::io::Error::last_os_error()));
     }

@@ -26,6 +26,7 @@ fn read_exact_n(s: &mut TcpStream, n: usize) -> Vec<u8> {
 /// Closes with a reset (SO_LINGER {1, 0}).
 fn reset(s: TcpStream) {
     let l = libc::linger { l_onoff: 1, l_linger: 0 };
+    // SAFETY: `s` is an open socket and `l` a live linger of the size given.
     unsafe {
         libc::setsockopt(s.as_raw_fd(), libc::SOL_SOCKET, libc::SO_LINGER, (&l as *const libc::linger).cast(), std::mem::size_of::<libc::linger>() as u32);
     }

@@ -129,6 +129,7 @@ pub fn run_ms_signalled(ms: &Path, args: &[&str], signals: &[(std::time::Duratio
         }
         pending.retain(|(at, sig)| {
             if start.elapsed() >= *at {
+                // SAFETY: kill touches no memory; try_wait found the child unreaped, so the pid is still its.
                 unsafe { libc_kill(child.id() as i32, *sig) };
                 false
             } else {
@@ -306,6 +307,7 @@ impl Running {
                 break st;
             }
             if start.elapsed() > timeout {
+                // SAFETY: kill touches no memory; try_wait found the child unreaped, so the pid is still its.
                 unsafe { libc_kill(child.id() as i32, 15) };
                 let t = std::time::Instant::now();
                 loop {

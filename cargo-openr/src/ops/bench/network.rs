@@ -27,6 +27,7 @@ impl Robot {
 
 impl Drop for Robot {
     fn drop(&mut self) {
+        // SAFETY: kill touches no memory; the child is not reaped yet (waited just below), so the pid is still its.
         unsafe { libc::kill(self.0.id() as i32, libc::SIGTERM) };
         let _ = self.0.wait();
     }
