@@ -30,6 +30,15 @@ if ((${#need[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${need[@]}" >/dev/null
 fi
 command -v cargo >/dev/null 2>&1 || { echo "cargo not found: install Rust from your distribution or rustup" >&2; exit 1; }
+# clippy: tools/test.sh checks that every unsafe block says why it is sound.
+if ! cargo clippy --version >/dev/null 2>&1; then
+  if command -v rustup >/dev/null 2>&1; then
+    echo "installing: clippy (rustup component)" >&2
+    rustup component add clippy >&2 || echo "warning: could not install clippy (offline?); tools/test.sh needs it: rustup component add clippy" >&2
+  else
+    echo "warning: cargo clippy not found and no rustup to add it; tools/test.sh needs it (Debian: apt-get install rust-clippy)" >&2
+  fi
+fi
 
 if ! "$VENV/bin/python" -c "import mujoco, sys; sys.exit(mujoco.__version__ != '$MUJOCO_VERSION')" >/dev/null 2>&1; then
   echo "installing: mujoco==$MUJOCO_VERSION (pip, into $VENV)" >&2
