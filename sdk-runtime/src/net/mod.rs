@@ -116,6 +116,7 @@ pub fn net() -> &'static Net {
         // SAFETY: plain syscall; a fresh descriptor we own.
         let fd = unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) };
         assert!(fd >= 0, "eventfd failed");
+        // SAFETY: `fd` is the fresh eventfd just created (checked non-negative), owned by nothing else.
         Net { state: Mutex::new(State::new()), config: NetConfig::new(OPTIONS.get_or_init(Default::default), quiet), wake_fd: unsafe { OwnedFd::from_raw_fd(fd) } }
     });
     if started {

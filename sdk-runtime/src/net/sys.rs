@@ -99,6 +99,7 @@ pub fn local_addr(fd: RawFd) -> (u32, u16) {
     // SAFETY: plain old data and out-params sized correctly.
     let mut sa: libc::sockaddr_in = unsafe { std::mem::zeroed() };
     let mut len = std::mem::size_of::<libc::sockaddr_in>() as libc::socklen_t;
+    // SAFETY: `sa` and `len` are live locals; `len` is `sa`'s size, the most the kernel writes.
     unsafe { libc::getsockname(fd, (&mut sa as *mut libc::sockaddr_in).cast(), &mut len) };
     from_sockaddr(&sa)
 }
@@ -107,6 +108,7 @@ pub fn peer_addr(fd: RawFd) -> (u32, u16) {
     // SAFETY: as above.
     let mut sa: libc::sockaddr_in = unsafe { std::mem::zeroed() };
     let mut len = std::mem::size_of::<libc::sockaddr_in>() as libc::socklen_t;
+    // SAFETY: `sa` and `len` are live locals; `len` is `sa`'s size, the most the kernel writes.
     unsafe { libc::getpeername(fd, (&mut sa as *mut libc::sockaddr_in).cast(), &mut len) };
     from_sockaddr(&sa)
 }
@@ -161,6 +163,7 @@ pub fn recvfrom(fd: RawFd, buf: *mut u8, len: usize) -> Result<(usize, (u32, u16
     // SAFETY: as recv; out-params sized correctly.
     let mut sa: libc::sockaddr_in = unsafe { std::mem::zeroed() };
     let mut sl = std::mem::size_of::<libc::sockaddr_in>() as libc::socklen_t;
+    // SAFETY: `buf..buf+len` is the caller's checked shared buffer (see `recv`); `sa`/`sl` live locals of that size.
     let r = unsafe { libc::recvfrom(fd, buf.cast(), len, 0, (&mut sa as *mut libc::sockaddr_in).cast(), &mut sl) };
     if r < 0 {
         Err(errno())
