@@ -3,4 +3,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/deps.sh
+# Every unsafe block and unsafe impl says why it is sound (a `// SAFETY:` comment).
+cargo clippy --version >/dev/null 2>&1 || { echo "error: cargo clippy not found (tools/deps.sh could not install it): rustup component add clippy" >&2; exit 1; }
+cargo clippy --workspace --all-targets --quiet -- -A clippy::all -D clippy::undocumented_unsafe_blocks
 exec cargo test --workspace
