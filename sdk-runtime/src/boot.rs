@@ -93,6 +93,47 @@ pub enum Ended {
 /// Loads and runs the stick until it ends; returns how it ended.
 pub fn run(opts: &RunOptions) -> Result<Outcome> {
     crate::net::configure(opts.net.clone());
+    let stick = read_stick(opts)?;
+    let signals = take_over_process(opts)?;
+    let Stick { ms, robot, object_cfg_path, objects, connect_path, connections, design_db, images, system_images, mic_pcm, trace } = stick;
+    let rt = install(opts, ms, design_db, robot, trace, mic_pcm)?;
+    watch_signals(rt, signals)?;
+    load_all(rt, opts, system_images, (&object_cfg_path, &objects), images)?;
+    let all = rt.all_objects();
+    rt.diag.info(&format!("loaded {} object(s) from {}", all.len(), object_cfg_path.display()));
+    start_services(rt, opts)?;
+    let mut booted = Vec::new();
+    let mut failures = crate::lifecycle::Failures::default();
+    let boot = crate::lifecycle::boot(rt, &all, (&connect_path, &connections), opts.lenient_connect, opts.watchdog, &mut booted, &mut failures)?;
+    rt.booting.store(false, std::sync::atomic::Ordering::Release);
+    let ended = match boot {
+        Ok(()) => {
+            rt.diag.info("all objects started");
+            wait_for_end(rt, opts.run_for)
+        }
+        Err(crate::lifecycle::Interrupted(sig)) => Ended::Signal(sig),
+    };
+    end_run(rt, opts, ended, &booted, failures)
+}
+
+/// What the stick holds, read (and checked) before anything starts.
+struct Stick {
+    ms: MsDir,
+    robot: crate::robot::VirtualRobot,
+    object_cfg_path: PathBuf,
+    objects: Vec<cfg::ObjectEntry>,
+    connect_path: PathBuf,
+    connections: Vec<cfg::Connection>,
+    design_db: Vec<(String, String)>,
+    images: Vec<Vec<u8>>,
+    system_images: Vec<Vec<u8>>,
+    mic_pcm: Vec<u8>,
+    trace: Option<std::fs::File>,
+}
+
+/// Reads the stick, the robot's inputs and every image, so a bad file fails the run
+/// before any object starts.
+fn read_stick(opts: &RunOptions) -> Result<Stick> {
     let ms = MsDir::new(&opts.ms_dir).map_err(|e| Error::io(&opts.ms_dir, e))?;
     let ms = match &opts.ms_base {
         Some(base) => ms.with_base(base).map_err(|e| Error::io(base, e))?,
@@ -121,7 +162,11 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         Some(p) => Some(std::fs::File::create(p).map_err(|e| Error::io(p, e))?),
         None => None,
     };
+    Ok(Stick { ms, robot, object_cfg_path, objects, connect_path, connections, design_db, images, system_images, mic_pcm, trace })
+}
 
+/// The process becomes the robot: signals, stdin, the crash reporter, FP traps, stdio.
+fn take_over_process(opts: &RunOptions) -> Result<crate::signals::Termination> {
     let signals = crate::signals::block_termination()?;
     crate::console::input::take_over_stdin();
     crate::crash::install();
@@ -131,12 +176,23 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     unsafe { libc::setvbuf(crate::console::stdout_file(), std::ptr::null_mut(), libc::_IOLBF, 0) };
     std::hint::black_box(crate::host_api::api_table());
     std::hint::black_box(crate::interpose::keep());
+    Ok(signals)
+}
 
+/// Installs the process's runtime.
+fn install(
+    opts: &RunOptions,
+    ms: MsDir,
+    design_db: Vec<(String, String)>,
+    robot: crate::robot::VirtualRobot,
+    trace: Option<std::fs::File>,
+    mic_pcm: Vec<u8>,
+) -> Result<&'static Runtime> {
     let clock = Clock::new(opts.speed);
     let sched = crate::sched::Sched::default();
     sched.set_serial(opts.speed == crate::clock::Speed::Max);
     sched.set_watchdog(opts.watchdog);
-    let rt = Runtime::install(Runtime {
+    Ok(Runtime::install(Runtime {
         ms,
         design: CString::new(opts.design.clone()).map_err(|_| ErrorKind::Runtime("bad design name".into()))?,
         design_db,
@@ -155,9 +211,12 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         vectors: Mutex::new(Vec::new()),
         sched,
         signal: std::sync::atomic::AtomicI32::new(0),
-    });
-    watch_signals(rt, signals)?;
+    }))
+}
 
+/// Loads the system objects, then OBJECT.CFG's, in order (their static constructors run).
+fn load_all(rt: &'static Runtime, opts: &RunOptions, system_images: Vec<Vec<u8>>, cfg: (&std::path::Path, &[cfg::ObjectEntry]), images: Vec<Vec<u8>>) -> Result<()> {
+    let (object_cfg_path, objects) = cfg;
     for (i, (path, image)) in opts.system_objects.iter().zip(system_images).enumerate() {
         let label = format!("/SYSTEM/OBJS/{}", path.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned()));
         load_object(rt, FIRST_SYSTEM_OID + i, &label, path, image)?;
@@ -166,9 +225,11 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         load_object(rt, FIRST_OID + i, &entry.ms_path, &entry.host_path, image)
             .map_err(|e| with_cfg_line(e, &object_cfg_path, entry.line))?;
     }
-    let all = rt.all_objects();
-    rt.diag.info(&format!("loaded {} object(s) from {}", all.len(), object_cfg_path.display()));
+    Ok(())
+}
 
+/// The clock limit, the control socket, peers, observers and the frame thread.
+fn start_services(rt: &'static Runtime, opts: &RunOptions) -> Result<()> {
     // Virtual time runs from here on: an object may sleep in its DoInit.
     rt.clock.set_limit(opts.run_for);
     if let Some(path) = &opts.control {
@@ -183,17 +244,11 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         .name("openr-robot".into())
         .spawn(move || crate::vr::run_frames(rt))
         .map_err(|e| ErrorKind::Runtime(format!("cannot start the robot thread: {e}")))?;
-    let mut booted = Vec::new();
-    let mut failures = crate::lifecycle::Failures::default();
-    let boot = crate::lifecycle::boot(rt, &all, (&connect_path, &connections), opts.lenient_connect, opts.watchdog, &mut booted, &mut failures)?;
-    rt.booting.store(false, std::sync::atomic::Ordering::Release);
-    let ended = match boot {
-        Ok(()) => {
-            rt.diag.info("all objects started");
-            wait_for_end(rt, opts.run_for)
-        }
-        Err(crate::lifecycle::Interrupted(sig)) => Ended::Signal(sig),
-    };
+    Ok(())
+}
+
+/// Stop and Destroy (unless the robot powered off), then the run's outcome.
+fn end_run(rt: &'static Runtime, opts: &RunOptions, ended: Ended, booted: &[Arc<ObjectSlot>], mut failures: crate::lifecycle::Failures) -> Result<Outcome> {
     rt.diag.info(&format!("shutting down ({ended:?}): Stop, then Destroy"));
     // No frame after the end; at `--speed max` the shutdown takes its turn where the
     // frame thread stopped (sched.rs), so it begins at the same message every run.
@@ -205,7 +260,7 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     } else {
         rt.sched.take_over(Duration::from_secs(2));
         rt.sched.release();
-        crate::lifecycle::shutdown(rt, &booted, opts.watchdog, &mut failures);
+        crate::lifecycle::shutdown(rt, booted, opts.watchdog, &mut failures);
     }
     let internal = crate::host_api::INTERNAL_ERRORS.load(std::sync::atomic::Ordering::Acquire);
     if internal > 0 {
