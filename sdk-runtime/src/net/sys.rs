@@ -121,7 +121,10 @@ pub fn accept(fd: RawFd) -> Result<OwnedFd, i32> {
 }
 
 /// read(2): Ok(0) = EOF.
-pub fn recv(fd: RawFd, buf: *mut u8, len: usize) -> Result<usize, i32> {
+/// # Safety
+/// `buf..buf+len` must be memory the caller may let the kernel write for the whole call
+/// (a live shared buffer checked by the caller, or a local).
+pub unsafe fn recv(fd: RawFd, buf: *mut u8, len: usize) -> Result<usize, i32> {
     // SAFETY: the caller validated `buf..buf+len` against a live shared buffer.
     let r = unsafe { libc::recv(fd, buf.cast(), len, 0) };
     if r < 0 {
@@ -131,7 +134,10 @@ pub fn recv(fd: RawFd, buf: *mut u8, len: usize) -> Result<usize, i32> {
     }
 }
 
-pub fn send(fd: RawFd, buf: *const u8, len: usize) -> Result<usize, i32> {
+/// # Safety
+/// `buf..buf+len` must be memory the caller may let the kernel read for the whole call
+/// (a live shared buffer checked by the caller, or a local).
+pub unsafe fn send(fd: RawFd, buf: *const u8, len: usize) -> Result<usize, i32> {
     // SAFETY: as recv.
     let r = unsafe { libc::send(fd, buf.cast(), len, libc::MSG_NOSIGNAL) };
     if r < 0 {
@@ -141,7 +147,10 @@ pub fn send(fd: RawFd, buf: *const u8, len: usize) -> Result<usize, i32> {
     }
 }
 
-pub fn sendto(fd: RawFd, buf: *const u8, len: usize, to: Option<(u32, u16)>) -> Result<usize, i32> {
+/// # Safety
+/// `buf..buf+len` must be memory the caller may let the kernel read for the whole call
+/// (a live shared buffer checked by the caller, or a local).
+pub unsafe fn sendto(fd: RawFd, buf: *const u8, len: usize, to: Option<(u32, u16)>) -> Result<usize, i32> {
     let r = match to {
         Some((a, p)) => {
             let sa = sockaddr(a, p);
@@ -159,7 +168,10 @@ pub fn sendto(fd: RawFd, buf: *const u8, len: usize, to: Option<(u32, u16)>) -> 
 }
 
 /// One datagram, truncated to `len`; returns (bytes copied, sender).
-pub fn recvfrom(fd: RawFd, buf: *mut u8, len: usize) -> Result<(usize, (u32, u16)), i32> {
+/// # Safety
+/// `buf..buf+len` must be memory the caller may let the kernel write for the whole call
+/// (a live shared buffer checked by the caller, or a local).
+pub unsafe fn recvfrom(fd: RawFd, buf: *mut u8, len: usize) -> Result<(usize, (u32, u16)), i32> {
     // SAFETY: as recv; out-params sized correctly.
     let mut sa: libc::sockaddr_in = unsafe { std::mem::zeroed() };
     let mut sl = std::mem::size_of::<libc::sockaddr_in>() as libc::socklen_t;

@@ -413,7 +413,8 @@ fn push_send(t: &mut TcpEp, fd: RawFd) -> bool {
     let Some(s) = t.send.as_mut() else { return false };
     let mut outcome = None;
     while s.done < s.size {
-        match sys::send(fd, (s.buf + s.done) as *const u8, s.size - s.done) {
+        // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`); a program that destroys a buffer with an operation pending on it breaks its own memory, as on the robot (issue 18 note).
+        match unsafe { sys::send(fd, (s.buf + s.done) as *const u8, s.size - s.done) } {
             Ok(n) => s.done += n,
             Err(libc::EINTR) => {}
             Err(libc::EAGAIN) => {
@@ -450,7 +451,8 @@ fn pull_receive(t: &mut TcpEp, fd: RawFd) {
         failure = Some(e);
     } else {
         while r.got < r.max {
-            match sys::recv(fd, (r.buf + r.got) as *mut u8, r.max - r.got) {
+            // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`); a program that destroys a buffer with an operation pending on it breaks its own memory, as on the robot (issue 18 note).
+            match unsafe { sys::recv(fd, (r.buf + r.got) as *mut u8, r.max - r.got) } {
                 Ok(0) => {
                     t.eof = true;
                     break;
@@ -522,7 +524,8 @@ fn finish_close(st: &mut State, id: u32, p: Pending, abort: bool) {
             // Unread input would turn the close into a reset: drop it first.
             let mut sink = [0u8; 4096];
             for _ in 0..64 {
-                match sys::recv(fd.as_raw_fd(), sink.as_mut_ptr(), sink.len()) {
+                // SAFETY: `sink` is a local array of `sink.len()` bytes.
+                match unsafe { sys::recv(fd.as_raw_fd(), sink.as_mut_ptr(), sink.len()) } {
                     Ok(n) if n > 0 => continue,
                     _ => break,
                 }

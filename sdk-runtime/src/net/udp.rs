@@ -188,7 +188,8 @@ fn address(u: &mut UdpEp, cfg: &NetConfig, p: Pending) {
 pub(super) fn progress(u: &mut UdpEp, cfg: &NetConfig) {
     let Some(fd) = u.fd.as_ref().map(|f| f.as_raw_fd()) else { return };
     if let Some((_, buf, size, to)) = u.send.as_ref() {
-        let code = match sys::sendto(fd, *buf as *const u8, *size, *to) {
+        // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`); a program that destroys a buffer with an operation pending on it breaks its own memory, as on the robot (issue 18 note).
+        let code = match unsafe { sys::sendto(fd, *buf as *const u8, *size, *to) } {
             Ok(_) => Some(udp::SUCCESS),
             Err(libc::EAGAIN | libc::EINTR) => u.nonblocking.then_some(udp::WOULDBLOCK),
             Err(e) => Some(udp_error(e)),
@@ -200,7 +201,8 @@ pub(super) fn progress(u: &mut UdpEp, cfg: &NetConfig) {
         }
     }
     if let Some((_, buf, size)) = u.recv.as_ref() {
-        let out = match sys::recvfrom(fd, *buf as *mut u8, *size) {
+        // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`); a program that destroys a buffer with an operation pending on it breaks its own memory, as on the robot (issue 18 note).
+        let out = match unsafe { sys::recvfrom(fd, *buf as *mut u8, *size) } {
             Ok((n, (fa, fp))) => Some((udp::SUCCESS, n, fa, fp)),
             Err(libc::EAGAIN | libc::EINTR) => u.nonblocking.then_some((udp::WOULDBLOCK, 0, 0, 0)),
             Err(e) => Some((udp_error(e), 0, 0, 0)),
