@@ -30,6 +30,11 @@ if ((${#need[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${need[@]}" >/dev/null
 fi
 command -v cargo >/dev/null 2>&1 || { echo "cargo not found: install Rust from your distribution or rustup" >&2; exit 1; }
+# rustfmt: tools/test.sh checks the layout (rustfmt.toml).
+if ! cargo fmt --version >/dev/null 2>&1 && command -v rustup >/dev/null 2>&1; then
+  echo "installing: rustfmt (rustup component)" >&2
+  rustup component add rustfmt >&2 || echo "warning: could not install rustfmt (offline?); tools/test.sh needs it" >&2
+fi
 # clippy: tools/test.sh checks that every unsafe block says why it is sound.
 if ! cargo clippy --version >/dev/null 2>&1; then
   if command -v rustup >/dev/null 2>&1; then

@@ -24,10 +24,37 @@ pub struct Target {
 pub const TARGETS: &[Target] = &[
     Target { name: "ms_cfg", check: ms_cfg, dict: &[b"[ERS-7]", b"[ERS-210]", b"/MS/OPEN-R/MW/OBJS/", b".BIN", b".S ", b".O", b"\r\n", b"# "] },
     Target { name: "wlan", check: wlan, dict: &[b"ESSID=", b"WEPENABLE=", b"HOSTNAME=", b"=", b"\r\n", b"# "] },
-    Target { name: "stub_cfg", check: stub_cfg, dict: &[b"ObjectName : ", b"NumOfOSubject : ", b"NumOfOObserver : ", b"Service : \"", b".char.S\"", b".char.O\"", b", null", b"()", b"Extra : ", b"\r\n"] },
-    Target { name: "ocf", check: ocf, dict: &[b"object ", b" cache", b" nocache", b" tlb", b" notlb", b" user", b" kernel", b"K ", b"18446744073709551615", b"# "] },
-    Target { name: "hostgw", check: hostgw, dict: &[b"!ROBOT_PROXY ", b"TCPGateway.Proxy.AperiosMessage.P ", b".S ", b".O ", b" 10.0.1.100", b" dmax=8", b"65535", b"65536", b"\r\n", b"# "] },
-    Target { name: "openr_toml", check: openr_toml, dict: &[b"sdk = ", b"design = \"ERS-210\"", b"speed = ", b"cxxflags = ", b"ldflags = ", b"base = ", b"\"", b"\\\"", b"\\\\", b"# "] },
+    Target {
+        name: "stub_cfg",
+        check: stub_cfg,
+        dict: &[
+            b"ObjectName : ",
+            b"NumOfOSubject : ",
+            b"NumOfOObserver : ",
+            b"Service : \"",
+            b".char.S\"",
+            b".char.O\"",
+            b", null",
+            b"()",
+            b"Extra : ",
+            b"\r\n",
+        ],
+    },
+    Target {
+        name: "ocf",
+        check: ocf,
+        dict: &[b"object ", b" cache", b" nocache", b" tlb", b" notlb", b" user", b" kernel", b"K ", b"18446744073709551615", b"# "],
+    },
+    Target {
+        name: "hostgw",
+        check: hostgw,
+        dict: &[b"!ROBOT_PROXY ", b"TCPGateway.Proxy.AperiosMessage.P ", b".S ", b".O ", b" 10.0.1.100", b" dmax=8", b"65535", b"65536", b"\r\n", b"# "],
+    },
+    Target {
+        name: "openr_toml",
+        check: openr_toml,
+        dict: &[b"sdk = ", b"design = \"ERS-210\"", b"speed = ", b"cxxflags = ", b"ldflags = ", b"base = ", b"\"", b"\\\"", b"\\\\", b"# "],
+    },
     Target { name: "wire", check: wire, dict: &[b"ORP1\x01\x00", b"\x00\x00\x40\x00", b"\xff\xff"] },
     Target { name: "control", check: control, dict: &[b"status", b"pause", b"resume", b"step ", b"speed ", b"max", b"shutdown", b"1e-300", b"1000000", b"\n"] },
     Target { name: "elf", check: elf, dict: &[b"\x7fELF\x02\x01\x01", b"\x3e\x00", b"\x03\x00", b"\x38\x00", b"\x1f\x8b\x08"] },
@@ -108,7 +135,8 @@ fn built_seeds(target: &str) -> Vec<Vec<u8>> {
         "elf" => {
             // Shared objects of the system (the tests of elf_check use them too), plain
             // and gzipped as mkbin writes a .BIN.
-            let mut v: Vec<Vec<u8>> = ["/lib/x86_64-linux-gnu/libdl.so.2", "/usr/lib/x86_64-linux-gnu/libdl.so.2"].iter().filter_map(|p| std::fs::read(p).ok()).take(1).collect();
+            let mut v: Vec<Vec<u8>> =
+                ["/lib/x86_64-linux-gnu/libdl.so.2", "/usr/lib/x86_64-linux-gnu/libdl.so.2"].iter().filter_map(|p| std::fs::read(p).ok()).take(1).collect();
             if let Some(so) = v.first().cloned() {
                 use std::io::Write;
                 let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::default());

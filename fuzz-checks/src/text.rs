@@ -154,7 +154,13 @@ pub fn ocf(data: &[u8]) -> bool {
             let pick = |b: bool, yes: &'static str, no: &'static str| if b { yes } else { no };
             let printed = format!(
                 "object {} {} {} {} {} {} {}\n",
-                o.name, o.stack, o.heap, o.priority, pick(o.cache, "cache", "nocache"), pick(o.tlb, "tlb", "notlb"), pick(o.user_mode, "user", "kernel")
+                o.name,
+                o.stack,
+                o.heap,
+                o.priority,
+                pick(o.cache, "cache", "nocache"),
+                pick(o.tlb, "tlb", "notlb"),
+                pick(o.user_mode, "user", "kernel")
             );
             assert_eq!(ocf::parse(path, &printed).unwrap_or_else(|e| panic!("printed ocf: {e}")), o);
             true

@@ -109,19 +109,39 @@ macro_rules! __fields {
 
 /// The plain structs of both headers: (C struct name, size, fields).
 pub const STRUCTS: &[(&str, usize, &[(&str, usize)])] = &[
-    ("openr_power_state", std::mem::size_of::<openr_power_state>(), __fields!(openr_power_state {
-        robot_status, battery_status, remaining_capacity, temperature, fully_charged_capacity, voltage, current, time_dif, volume
-    })),
+    (
+        "openr_power_state",
+        std::mem::size_of::<openr_power_state>(),
+        __fields!(openr_power_state {
+            robot_status,
+            battery_status,
+            remaining_capacity,
+            temperature,
+            fully_charged_capacity,
+            voltage,
+            current,
+            time_dif,
+            volume
+        }),
+    ),
     ("openr_vr_event", std::mem::size_of::<openr_vr_event>(), __fields!(openr_vr_event { kind, service, token, mem_id, size })),
-    ("openr_net_request", std::mem::size_of::<openr_net_request>(), __fields!(openr_net_request {
-        proto, op, endpoint, addr, port, laddr, lport, buffer, size, size_min, flags, linger_time, value, value2,
-        region, region_base, addr_list, name, str_ as "str"
-    })),
-    ("openr_net_result", std::mem::size_of::<openr_net_result>(), __fields!(openr_net_result {
-        proto, op, error, laddr, lport, faddr, fport, size, ready, module, endpoint, region, base, buf_size, name,
-        name_valid, server_address, host_address, host_valid, n_address, n_alias, nscount, addr_list, param_type,
-        i32_ as "i32", str_ as "str"
-    })),
+    (
+        "openr_net_request",
+        std::mem::size_of::<openr_net_request>(),
+        __fields!(openr_net_request {
+            proto, op, endpoint, addr, port, laddr, lport, buffer, size, size_min, flags, linger_time, value, value2,
+            region, region_base, addr_list, name, str_ as "str"
+        }),
+    ),
+    (
+        "openr_net_result",
+        std::mem::size_of::<openr_net_result>(),
+        __fields!(openr_net_result {
+            proto, op, error, laddr, lport, faddr, fport, size, ready, module, endpoint, region, base, buf_size, name,
+            name_valid, server_address, host_address, host_valid, n_address, n_alias, nscount, addr_list, param_type,
+            i32_ as "i32", str_ as "str"
+        }),
+    ),
     ("openr_host_api", std::mem::size_of::<openr_host_api>(), HOST_FIELDS),
     ("openr_net_api", std::mem::size_of::<openr_net_api>(), NET_FIELDS),
 ];

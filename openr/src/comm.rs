@@ -64,11 +64,19 @@ pub(crate) const fn entry_of(sel: u32) -> Entry {
         SEL_STOP => Entry::Stop,
         SEL_DESTROY => Entry::Destroy,
         _ if s < 4 + 2 * MAX_SUBJECTS => {
-            if (s - 4) % 2 == 0 { Entry::Control((s - 4) / 2) } else { Entry::Ready((s - 4) / 2) }
+            if (s - 4) % 2 == 0 {
+                Entry::Control((s - 4) / 2)
+            } else {
+                Entry::Ready((s - 4) / 2)
+            }
         }
         _ => {
             let o = s - 4 - 2 * MAX_SUBJECTS;
-            if o % 2 == 0 { Entry::Connect(o / 2) } else { Entry::Notify(o / 2) }
+            if o % 2 == 0 {
+                Entry::Connect(o / 2)
+            } else {
+                Entry::Notify(o / 2)
+            }
         }
     }
 }
@@ -312,7 +320,11 @@ impl ObserverState {
         match host::call::<_, OControlReplyMessage>(subject, ctl, CONTROL_TIMEOUT_MS) {
             Ok(r) => Ok(r),
             Err(rc) => {
-                let why = match rc { -3 => "timeout", -4 => "short reply", _ => "unknown object" };
+                let why = match rc {
+                    -3 => "timeout",
+                    -4 => "short reply",
+                    _ => "unknown object",
+                };
                 osyslog(Priority::Error, &format!("Observer: no answer from subject {} ({why})", abi::get_name(&ctl.sub_name)));
                 Err(if rc == -4 { abi::O_REFUSED } else { abi::O_FAIL })
             }
@@ -355,7 +367,13 @@ impl ObserverState {
 
     /// Sends ASSERT/DEASSERT-READY to one subject, returning what came from it.
     pub(crate) fn send_ready(&mut self, subject: OServiceEntry, command: u32) -> bool {
-        let mut m = OReadyMessage { msg_type: abi::OMSG_READY_V22, command, observer_id: self.id, num_of_data: 0, rc_region: [std::ptr::null_mut(); abi::MAX_NUM_DATA] };
+        let mut m = OReadyMessage {
+            msg_type: abi::OMSG_READY_V22,
+            command,
+            observer_id: self.id,
+            num_of_data: 0,
+            rc_region: [std::ptr::null_mut(); abi::MAX_NUM_DATA],
+        };
         let mut kept = Vec::new();
         for (s, token) in self.held.drain(..) {
             if s == subject && (m.num_of_data as usize) < abi::MAX_NUM_DATA {

@@ -77,8 +77,16 @@ pub(crate) fn call<T: Copy, R: Copy>(dest: OServiceEntry, msg: &T, timeout_ms: u
     let mut got = 0usize;
     // SAFETY: `out` has room for size_of::<R>() bytes; the runtime writes at most that.
     let rc = unsafe {
-        (a.call)(dest.oid, dest.selector, (msg as *const T).cast(), std::mem::size_of::<T>(),
-                 out.as_mut_ptr().cast(), std::mem::size_of::<R>(), &mut got, timeout_ms)
+        (a.call)(
+            dest.oid,
+            dest.selector,
+            (msg as *const T).cast(),
+            std::mem::size_of::<T>(),
+            out.as_mut_ptr().cast(),
+            std::mem::size_of::<R>(),
+            &mut got,
+            timeout_ms,
+        )
     };
     if rc != 0 {
         return Err(rc);

@@ -358,7 +358,12 @@ unsafe fn dispatch_inner<T: Object>(sel: u32, msg: *mut c_void) {
             let reply = with_context(|ctx| ctx.subjects.get_mut(k).map(|s| s.control(&m))).flatten();
             match reply {
                 Some(r) => host::reply(&r),
-                None => host::reply(&abi::OControlReplyMessage { msg_type: abi::OMSG_CONTROL_REPLY, status: abi::O_NOT_FOUND, subject_id: OServiceEntry::INVALID, mem_id: abi::OBJCOMM_VERSION22 }),
+                None => host::reply(&abi::OControlReplyMessage {
+                    msg_type: abi::OMSG_CONTROL_REPLY,
+                    status: abi::O_NOT_FOUND,
+                    subject_id: OServiceEntry::INVALID,
+                    mem_id: abi::OBJCOMM_VERSION22,
+                }),
             }
         }
         Entry::Ready(k) => {

@@ -34,7 +34,11 @@ impl std::error::Error for OStatus {}
 pub type Result<T> = std::result::Result<T, OStatus>;
 
 fn check(rc: u32) -> Result<()> {
-    if rc == abi::O_SUCCESS { Ok(()) } else { Err(OStatus(rc)) }
+    if rc == abi::O_SUCCESS {
+        Ok(())
+    } else {
+        Err(OStatus(rc))
+    }
 }
 
 fn api() -> Result<&'static abi::openr_host_api> {

@@ -176,14 +176,7 @@ fn fits(values: &CommandValues, kind: PrimitiveKind) -> Result<(), IgnoreReason>
 
 impl Effector {
     pub fn new(model: RobotModel) -> Effector {
-        Effector {
-            model,
-            queues: BTreeMap::new(),
-            seq: 0,
-            targets: HashMap::new(),
-            immediate: Vec::new(),
-            clamping: HashMap::new(),
-        }
+        Effector { model, queues: BTreeMap::new(), seq: 0, targets: HashMap::new(), immediate: Vec::new(), clamping: HashMap::new() }
     }
 
     /// Queues a parsed vector on `connection` (one call per data item of a NOTIFY, in
@@ -288,12 +281,8 @@ impl Effector {
             out.started.push(Started { connection: conn, token: head.token, frame, duration: head.duration, slots: head.slots.clone() });
         }
         // 4. this frame's commands, later-arriving vectors overriding earlier ones
-        let mut playing: Vec<(u64, ConnectionId, &Queued)> = self
-            .queues
-            .iter()
-            .filter_map(|(&c, q)| q.front().map(|v| (v.seq, c, v)))
-            .filter(|(_, _, v)| matches!(v.state, State::Playing { .. }))
-            .collect();
+        let mut playing: Vec<(u64, ConnectionId, &Queued)> =
+            self.queues.iter().filter_map(|(&c, q)| q.front().map(|v| (v.seq, c, v))).filter(|(_, _, v)| matches!(v.state, State::Playing { .. })).collect();
         playing.sort_by_key(|x| x.0);
         let mut cmds: BTreeMap<PrimitiveId, (FrameCommand, Option<(ConnectionId, Token)>)> = BTreeMap::new();
         for (_, conn, v) in &playing {
@@ -316,9 +305,7 @@ impl Effector {
             let Some(p) = self.model.primitive(id) else { continue };
             let command = match (requested, p.kind, p.joint) {
                 (FrameCommand::Joint(v), _, Some(j)) => FrameCommand::Joint(j.clamp(v)),
-                (FrameCommand::Led2(on), PrimitiveKind::Led3, _) => {
-                    FrameCommand::Led3(Led3Value { intensity: if on { 255 } else { 0 }, mode: 0xFFFF })
-                }
+                (FrameCommand::Led2(on), PrimitiveKind::Led3, _) => FrameCommand::Led3(Led3Value { intensity: if on { 255 } else { 0 }, mode: 0xFFFF }),
                 (c, _, _) => c,
             };
             applied.push(Applied { primitive: id, command, requested, source });
@@ -460,7 +447,8 @@ mod tests {
         e.enqueue(1, &v, 1);
         let out = run(&mut e, &mut s, 1, 10);
         assert_eq!(out.iter().position(|(_, f)| !f.started.is_empty()), Some(3)); // frame 4
-        assert_eq!(out.iter().position(|(_, f)| !f.completed.is_empty()), Some(6)); // frame 7
+        assert_eq!(out.iter().position(|(_, f)| !f.completed.is_empty()), Some(6));
+        // frame 7
     }
 
     #[test]

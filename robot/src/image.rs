@@ -84,13 +84,7 @@ impl ImageLayout {
         let dims = [(w, h, 6), (w / 2, h / 2, 6), (w / 4, h / 4, 6), (w / 2, h / 2, 1)];
         let mut off = HEADER_SIZE + IMAGE_INFO_SIZE * LAYERS;
         let layers = dims.map(|(width, height, bands)| {
-            let l = LayerLayout {
-                data_type: if bands == 6 { odata::FBK_YCRCB_HPF } else { odata::FBK_CDT },
-                width,
-                height,
-                bands,
-                data_offset: off,
-            };
+            let l = LayerLayout { data_type: if bands == 6 { odata::FBK_YCRCB_HPF } else { odata::FBK_CDT }, width, height, bands, data_offset: off };
             off += l.data_size();
             l
         });
@@ -120,17 +114,13 @@ impl ImageLayout {
         }
         buf[..HEADER_SIZE + IMAGE_INFO_SIZE * LAYERS].fill(0);
         let total = u32::try_from(buf.len()).map_err(|_| VectorError::BadArgument("image vector too large"))?;
-        for (i, v) in [0, 0, 0, total, odata::FBKIMAGE_VECTOR, HEADER_SIZE as u32, IMAGE_INFO_SIZE as u32, 4, 4, 0xFFFF_FFFF]
-            .into_iter()
-            .enumerate()
-        {
+        for (i, v) in [0, 0, 0, total, odata::FBKIMAGE_VECTOR, HEADER_SIZE as u32, IMAGE_INFO_SIZE as u32, 4, 4, 0xFFFF_FFFF].into_iter().enumerate() {
             wr_u32(buf, 4 * i, v)?;
         }
         for (i, l) in self.layers.iter().enumerate() {
             let o = HEADER_SIZE + IMAGE_INFO_SIZE * i;
-            for (k, v) in [l.data_type, primitive, frame_number, l.data_offset as u32, l.data_size() as u32, l.width as u32, l.height as u32]
-                .into_iter()
-                .enumerate()
+            for (k, v) in
+                [l.data_type, primitive, frame_number, l.data_offset as u32, l.data_size() as u32, l.width as u32, l.height as u32].into_iter().enumerate()
             {
                 wr_u32(buf, o + 4 * k, v)?;
             }

@@ -89,12 +89,22 @@ pub enum LedState {
 /// An observable state change produced by [`Body::apply`] / [`Body::step`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Change {
-    Led { primitive: PrimitiveId, state: LedState },
+    Led {
+        primitive: PrimitiveId,
+        state: LedState,
+    },
     /// The face panel switched between mode A and B (ers7-model 7.2).
-    FaceMode { mode: u16 },
-    Ear { primitive: PrimitiveId, state: u32 },
+    FaceMode {
+        mode: u16,
+    },
+    Ear {
+        primitive: PrimitiveId,
+        state: u32,
+    },
     /// An ear has been in STATE1 for [`EAR_HOLD_WARN_FRAMES`] frames.
-    EarHeldTooLong { primitive: PrimitiveId },
+    EarHeldTooLong {
+        primitive: PrimitiveId,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -770,11 +770,7 @@ impl VirtualRobot {
     }
 
     fn sensor_summary(&self, first_frame: u32) -> TraceEvent {
-        let joints = self
-            .model
-            .sensor_entries()
-            .filter_map(|p| self.body.joint(p.id).map(|j| (p.locator, degrees(j.angle))))
-            .collect();
+        let joints = self.model.sensor_entries().filter_map(|p| self.body.joint(p.id).map(|j| (p.locator, degrees(j.angle)))).collect();
         let acc = |i: u8| self.primitive_of(Part::Accel(i)).and_then(|id| self.latest.get(&id)).map_or(0.0, |v| v.value as f64 / 1e6);
         let paw = |l: Leg| self.primitive_of(Part::PawSwitch(l)).and_then(|id| self.latest.get(&id)).is_some_and(|v| v.value != 0);
         TraceEvent::Sensor {

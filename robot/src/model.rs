@@ -572,27 +572,12 @@ fn ers7_rows() -> Vec<Row> {
     for (n, loc) in FACE.iter().enumerate() {
         v.push((loc, Led3, Part::FaceLight(n as u8 + 1)));
     }
-    v.extend_from_slice(&[
-        ("PRM:/r1/c1/c2/c3/i1-FbkImageSensor:F1", FbkImageSensor, Part::Camera),
-        ("PRM:/r1/c1/c2/c3/m1-Mic:M1", Mic, Part::Mic),
-    ]);
+    v.extend_from_slice(&[("PRM:/r1/c1/c2/c3/i1-FbkImageSensor:F1", FbkImageSensor, Part::Camera), ("PRM:/r1/c1/c2/c3/m1-Mic:M1", Mic, Part::Mic)]);
     const LEGS: [(Leg, [&str; 4]); 4] = [
-        (
-            Leg::LeftFront,
-            ["PRM:/r2/c1-Joint2:21", "PRM:/r2/c1/c2-Joint2:22", "PRM:/r2/c1/c2/c3-Joint2:23", "PRM:/r2/c1/c2/c3/c4-Sensor:24"],
-        ),
-        (
-            Leg::LeftRear,
-            ["PRM:/r3/c1-Joint2:31", "PRM:/r3/c1/c2-Joint2:32", "PRM:/r3/c1/c2/c3-Joint2:33", "PRM:/r3/c1/c2/c3/c4-Sensor:34"],
-        ),
-        (
-            Leg::RightFront,
-            ["PRM:/r4/c1-Joint2:41", "PRM:/r4/c1/c2-Joint2:42", "PRM:/r4/c1/c2/c3-Joint2:43", "PRM:/r4/c1/c2/c3/c4-Sensor:44"],
-        ),
-        (
-            Leg::RightRear,
-            ["PRM:/r5/c1-Joint2:51", "PRM:/r5/c1/c2-Joint2:52", "PRM:/r5/c1/c2/c3-Joint2:53", "PRM:/r5/c1/c2/c3/c4-Sensor:54"],
-        ),
+        (Leg::LeftFront, ["PRM:/r2/c1-Joint2:21", "PRM:/r2/c1/c2-Joint2:22", "PRM:/r2/c1/c2/c3-Joint2:23", "PRM:/r2/c1/c2/c3/c4-Sensor:24"]),
+        (Leg::LeftRear, ["PRM:/r3/c1-Joint2:31", "PRM:/r3/c1/c2-Joint2:32", "PRM:/r3/c1/c2/c3-Joint2:33", "PRM:/r3/c1/c2/c3/c4-Sensor:34"]),
+        (Leg::RightFront, ["PRM:/r4/c1-Joint2:41", "PRM:/r4/c1/c2-Joint2:42", "PRM:/r4/c1/c2/c3-Joint2:43", "PRM:/r4/c1/c2/c3/c4-Sensor:44"]),
+        (Leg::RightRear, ["PRM:/r5/c1-Joint2:51", "PRM:/r5/c1/c2-Joint2:52", "PRM:/r5/c1/c2/c3-Joint2:53", "PRM:/r5/c1/c2/c3/c4-Sensor:54"]),
     ];
     for (leg, locs) in LEGS {
         v.push((locs[0], Joint2, Part::LegJ1(leg)));
@@ -624,12 +609,9 @@ fn ers7_rows() -> Vec<Row> {
 
 /// Reference postures of ers7-model 4.7, degrees in the order tilt1, pan, tilt2, mouth,
 /// LF J1 J2 J3, LR J1 J2 J3, RF J1 J2 J3, RR J1 J2 J3, tail tilt, tail pan.
-pub const POSTURE_SLEEP: [f64; 18] =
-    [-25.0, 0.0, 25.0, -5.0, 59.0, 0.0, 30.0, -119.0, 4.0, 122.0, 59.0, 0.0, 30.0, -119.0, 4.0, 122.0, 5.0, 0.0];
-pub const POSTURE_STAND: [f64; 18] =
-    [-20.0, 0.0, 25.0, -5.0, -5.0, 3.0, 30.0, -5.0, 3.0, 30.0, -5.0, 3.0, 30.0, -5.0, 3.0, 30.0, 5.0, 0.0];
-pub const POSTURE_SIT: [f64; 18] =
-    [-40.0, 0.0, 5.0, -5.0, -25.0, -4.0, 20.0, -78.0, 20.0, 110.0, -25.0, -4.0, 20.0, -78.0, 20.0, 110.0, 5.0, 0.0];
+pub const POSTURE_SLEEP: [f64; 18] = [-25.0, 0.0, 25.0, -5.0, 59.0, 0.0, 30.0, -119.0, 4.0, 122.0, 59.0, 0.0, 30.0, -119.0, 4.0, 122.0, 5.0, 0.0];
+pub const POSTURE_STAND: [f64; 18] = [-20.0, 0.0, 25.0, -5.0, -5.0, 3.0, 30.0, -5.0, 3.0, 30.0, -5.0, 3.0, 30.0, -5.0, 3.0, 30.0, 5.0, 0.0];
+pub const POSTURE_SIT: [f64; 18] = [-40.0, 0.0, 5.0, -5.0, -25.0, -4.0, 20.0, -78.0, 20.0, 110.0, -25.0, -4.0, 20.0, -78.0, 20.0, 110.0, 5.0, 0.0];
 
 /// The parts in the order of the posture tables above.
 pub const POSTURE_PARTS: [Part; 18] = [

@@ -11,22 +11,10 @@ type Row = (&'static str, PrimitiveKind, Part);
 fn legs(v: &mut Vec<Row>) {
     use PrimitiveKind::*;
     const LEGS: [(Leg, [&str; 4]); 4] = [
-        (
-            Leg::LeftFront,
-            ["PRM:/r2/c1-Joint2:j1", "PRM:/r2/c1/c2-Joint2:j2", "PRM:/r2/c1/c2/c3-Joint2:j3", "PRM:/r2/c1/c2/c3/c4-Sensor:s4"],
-        ),
-        (
-            Leg::LeftRear,
-            ["PRM:/r3/c1-Joint2:j1", "PRM:/r3/c1/c2-Joint2:j2", "PRM:/r3/c1/c2/c3-Joint2:j3", "PRM:/r3/c1/c2/c3/c4-Sensor:s4"],
-        ),
-        (
-            Leg::RightFront,
-            ["PRM:/r4/c1-Joint2:j1", "PRM:/r4/c1/c2-Joint2:j2", "PRM:/r4/c1/c2/c3-Joint2:j3", "PRM:/r4/c1/c2/c3/c4-Sensor:s4"],
-        ),
-        (
-            Leg::RightRear,
-            ["PRM:/r5/c1-Joint2:j1", "PRM:/r5/c1/c2-Joint2:j2", "PRM:/r5/c1/c2/c3-Joint2:j3", "PRM:/r5/c1/c2/c3/c4-Sensor:s4"],
-        ),
+        (Leg::LeftFront, ["PRM:/r2/c1-Joint2:j1", "PRM:/r2/c1/c2-Joint2:j2", "PRM:/r2/c1/c2/c3-Joint2:j3", "PRM:/r2/c1/c2/c3/c4-Sensor:s4"]),
+        (Leg::LeftRear, ["PRM:/r3/c1-Joint2:j1", "PRM:/r3/c1/c2-Joint2:j2", "PRM:/r3/c1/c2/c3-Joint2:j3", "PRM:/r3/c1/c2/c3/c4-Sensor:s4"]),
+        (Leg::RightFront, ["PRM:/r4/c1-Joint2:j1", "PRM:/r4/c1/c2-Joint2:j2", "PRM:/r4/c1/c2/c3-Joint2:j3", "PRM:/r4/c1/c2/c3/c4-Sensor:s4"]),
+        (Leg::RightRear, ["PRM:/r5/c1-Joint2:j1", "PRM:/r5/c1/c2-Joint2:j2", "PRM:/r5/c1/c2/c3-Joint2:j3", "PRM:/r5/c1/c2/c3/c4-Sensor:s4"]),
     ];
     for (leg, l) in LEGS {
         v.push((l[0], Joint2, Part::LegJ1(leg)));

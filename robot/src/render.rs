@@ -282,8 +282,20 @@ impl PinholeCamera {
         let (t_box, inside) = match world.field {
             Some(f) => {
                 let inside = c[0] > f.x_min && c[0] < f.x_max && c[1] > f.y_min && c[1] < f.y_max;
-                let tx = if d[0] > 0.0 { (f.x_max - c[0]) / d[0] } else if d[0] < 0.0 { (f.x_min - c[0]) / d[0] } else { f64::INFINITY };
-                let ty = if d[1] > 0.0 { (f.y_max - c[1]) / d[1] } else if d[1] < 0.0 { (f.y_min - c[1]) / d[1] } else { f64::INFINITY };
+                let tx = if d[0] > 0.0 {
+                    (f.x_max - c[0]) / d[0]
+                } else if d[0] < 0.0 {
+                    (f.x_min - c[0]) / d[0]
+                } else {
+                    f64::INFINITY
+                };
+                let ty = if d[1] > 0.0 {
+                    (f.y_max - c[1]) / d[1]
+                } else if d[1] < 0.0 {
+                    (f.y_min - c[1]) / d[1]
+                } else {
+                    f64::INFINITY
+                };
                 (tx.min(ty), inside)
             }
             None => (f64::INFINITY, true),

@@ -41,8 +41,8 @@ use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use super::kinematics::Body;
-use super::render::CameraWorld;
 use super::model::{Leg, Part, PrimitiveId, PrimitiveKind, SensorKind};
+use super::render::CameraWorld;
 use super::vectors::SensorValue;
 
 /// Standard gravity, µm/s².

@@ -104,11 +104,7 @@ fn sample_style_motion_flow() {
     assert_eq!(outs[16 + 10].frame, 27);
     assert_eq!(r.joint_value(tilt).map(|v| v.value), Ok(target));
     // a sensor vector every 4 frames, continuing frame numbers
-    let firsts: Vec<u32> = outs
-        .iter()
-        .filter_map(|o| o.sensor_vector.as_ref())
-        .map(|v| read_sensor_entry(v, 0).unwrap().frame_number)
-        .collect();
+    let firsts: Vec<u32> = outs.iter().filter_map(|o| o.sensor_vector.as_ref()).map(|v| read_sensor_entry(v, 0).unwrap().frame_number).collect();
     assert_eq!(firsts, vec![1, 5, 9, 13, 17, 21, 25, 29]);
     let last = outs[31].sensor_vector.as_ref().unwrap();
     let h = VectorHeader::read(last).unwrap();

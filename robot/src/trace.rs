@@ -285,11 +285,7 @@ mod tests {
             s.to_json(),
             "{\"t_ms\":32,\"frame\":4,\"kind\":\"sensor\",\"first_frame\":1,\"joints\":{\"a\\\"b\":1.235},\"accel\":[0,0,9.807],\"paws\":[true,false,true,true]}"
         );
-        let c = TraceRecord {
-            t_ms: 0,
-            frame: 0,
-            event: TraceEvent::Clamp { locator: "x", requested_deg: 0.0, clamped_deg: 5.0, combined: false },
-        };
+        let c = TraceRecord { t_ms: 0, frame: 0, event: TraceEvent::Clamp { locator: "x", requested_deg: 0.0, clamped_deg: 5.0, combined: false } };
         assert!(c.to_json().ends_with("\"kind\":\"clamp\",\"locator\":\"x\",\"requested_deg\":0,\"clamped_deg\":5,\"rule\":\"range\"}"));
     }
 }

@@ -89,7 +89,6 @@ pub enum Ended {
     Fatal(u32),
 }
 
-
 /// Loads and runs the stick until it ends; returns how it ended.
 pub fn run(opts: &RunOptions) -> Result<Outcome> {
     crate::net::configure(opts.net.clone());
@@ -215,15 +214,20 @@ fn install(
 }
 
 /// Loads the system objects, then OBJECT.CFG's, in order (their static constructors run).
-fn load_all(rt: &'static Runtime, opts: &RunOptions, system_images: Vec<Vec<u8>>, cfg: (&std::path::Path, &[cfg::ObjectEntry]), images: Vec<Vec<u8>>) -> Result<()> {
+fn load_all(
+    rt: &'static Runtime,
+    opts: &RunOptions,
+    system_images: Vec<Vec<u8>>,
+    cfg: (&std::path::Path, &[cfg::ObjectEntry]),
+    images: Vec<Vec<u8>>,
+) -> Result<()> {
     let (object_cfg_path, objects) = cfg;
     for (i, (path, image)) in opts.system_objects.iter().zip(system_images).enumerate() {
         let label = format!("/SYSTEM/OBJS/{}", path.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned()));
         load_object(rt, FIRST_SYSTEM_OID + i, &label, path, image)?;
     }
     for (i, (entry, image)) in objects.iter().zip(images).enumerate() {
-        load_object(rt, FIRST_OID + i, &entry.ms_path, &entry.host_path, image)
-            .map_err(|e| with_cfg_line(e, &object_cfg_path, entry.line))?;
+        load_object(rt, FIRST_OID + i, &entry.ms_path, &entry.host_path, image).map_err(|e| with_cfg_line(e, &object_cfg_path, entry.line))?;
     }
     Ok(())
 }

@@ -64,13 +64,18 @@ pub struct ObjectEntry {
 pub fn object_cfg(ms: &MsDir, design: &str) -> Result<(PathBuf, Vec<ObjectEntry>)> {
     let expected = ms.root().join("OPEN-R/MW/CONF/OBJECT.CFG");
     let cfg = CfgFile::find(ms, "OBJECT.CFG")?.ok_or_else(|| {
-        Error::config(&expected, None, format!("not found: `{}` is not a Memory Stick tree (expected OPEN-R/MW/CONF/OBJECT.CFG listing the objects to load)", ms.root().display()))
+        Error::config(
+            &expected,
+            None,
+            format!("not found: `{}` is not a Memory Stick tree (expected OPEN-R/MW/CONF/OBJECT.CFG listing the objects to load)", ms.root().display()),
+        )
     })?;
     let mut out = Vec::new();
     for (line, ms_path) in parse_object_cfg(&cfg.path, &cfg.text, design)? {
-        let host_path = ms.existing(&ms_path).filter(|p| p.is_file()).ok_or_else(|| {
-            Error::config(&cfg.path, Some(line), format!("object `{ms_path}` not found on the Memory Stick (is it built and installed?)"))
-        })?;
+        let host_path = ms
+            .existing(&ms_path)
+            .filter(|p| p.is_file())
+            .ok_or_else(|| Error::config(&cfg.path, Some(line), format!("object `{ms_path}` not found on the Memory Stick (is it built and installed?)")))?;
         out.push(ObjectEntry { line, ms_path, host_path });
     }
     Ok((cfg.path, out))
@@ -81,7 +86,11 @@ pub fn parse_object_cfg(path: &Path, text: &str, design: &str) -> Result<Vec<(us
     let mut out = Vec::new();
     for line in lines_for_design(text, design) {
         if line.fields.len() > 1 {
-            return Err(Error::config(path, Some(line.number), format!("expected one path per line (/MS/OPEN-R/MW/OBJS/XXXXXXXX.BIN), found `{}`", line.fields.join(" "))));
+            return Err(Error::config(
+                path,
+                Some(line.number),
+                format!("expected one path per line (/MS/OPEN-R/MW/OBJS/XXXXXXXX.BIN), found `{}`", line.fields.join(" ")),
+            ));
         }
         out.push((line.number, line.fields[0].clone()));
     }
@@ -113,23 +122,24 @@ pub fn parse_connect_cfg(path: &Path, text: &str, design: &str) -> Result<Vec<Co
     let mut out: Vec<Connection> = Vec::new();
     for line in lines_for_design(text, design) {
         let [subject, observer] = &line.fields[..] else {
-            return Err(Error::config(path, Some(line.number), format!(
-                "expected `<subject service> <observer service>`, found {} field(s): `{}`",
-                line.fields.len(), line.fields.join(" ")
-            )));
+            return Err(Error::config(
+                path,
+                Some(line.number),
+                format!("expected `<subject service> <observer service>`, found {} field(s): `{}`", line.fields.len(), line.fields.join(" ")),
+            ));
         };
         for (name, kind) in [(subject, "S"), (observer, "O")] {
             if name.rsplit('.').next() != Some(kind) || name.split('.').count() != 4 {
                 let what = if kind == "S" { "subject" } else { "observer" };
-                return Err(Error::config(path, Some(line.number), format!(
-                    "`{name}` is not a {what} service name (expected Object.Sub.Data.{kind}; the subject comes first)"
-                )));
+                return Err(Error::config(
+                    path,
+                    Some(line.number),
+                    format!("`{name}` is not a {what} service name (expected Object.Sub.Data.{kind}; the subject comes first)"),
+                ));
             }
         }
         if let Some(first) = out.iter().find(|c| &c.subject == subject && &c.observer == observer) {
-            return Err(Error::config(path, Some(line.number), format!(
-                "duplicate connection `{subject} {observer}` (first on line {})", first.line
-            )));
+            return Err(Error::config(path, Some(line.number), format!("duplicate connection `{subject} {observer}` (first on line {})", first.line)));
         }
         out.push(Connection { line: line.number, subject: subject.clone(), observer: observer.clone() });
     }
@@ -147,9 +157,7 @@ pub fn parse_design_db(path: &Path, text: &str, design: &str) -> Result<Vec<(Str
     let mut out = Vec::new();
     for line in lines_for_design(text, design) {
         let [key, value] = &line.fields[..] else {
-            return Err(Error::config(path, Some(line.number), format!(
-                "expected `<KEYWORD> <absolute path>`, found `{}`", line.fields.join(" ")
-            )));
+            return Err(Error::config(path, Some(line.number), format!("expected `<KEYWORD> <absolute path>`, found `{}`", line.fields.join(" "))));
         };
         out.push((key.clone(), value.clone()));
     }

@@ -205,7 +205,13 @@ mod tests {
 
     #[test]
     fn commands_parse_and_print_back() {
-        for (line, cmd) in [(" status ", Command::Status), ("step", Command::Step(1)), ("step 7", Command::Step(7)), ("speed MAX", Command::Speed(Speed::Max)), ("speed 2.5", Command::Speed(Speed::Factor(2.5)))] {
+        for (line, cmd) in [
+            (" status ", Command::Status),
+            ("step", Command::Step(1)),
+            ("step 7", Command::Step(7)),
+            ("speed MAX", Command::Speed(Speed::Max)),
+            ("speed 2.5", Command::Speed(Speed::Factor(2.5))),
+        ] {
             assert_eq!(line.parse::<Command>(), Ok(cmd));
             assert_eq!(cmd.to_string().parse::<Command>(), Ok(cmd));
         }

@@ -83,10 +83,7 @@ mod tests {
 
     #[test]
     fn loader_messages_are_annotated() {
-        assert_eq!(
-            annotate("x.so: undefined symbol: _Z14missing_helperi"),
-            "x.so: undefined symbol: `missing_helper(int)` (_Z14missing_helperi)"
-        );
+        assert_eq!(annotate("x.so: undefined symbol: _Z14missing_helperi"), "x.so: undefined symbol: `missing_helper(int)` (_Z14missing_helperi)");
         assert_eq!(annotate("undefined symbol: foo_Zbar"), "undefined symbol: foo_Zbar");
     }
 }

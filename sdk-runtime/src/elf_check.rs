@@ -175,15 +175,7 @@ fn program_headers(b: &Bytes) -> std::result::Result<Vec<Segment>, String> {
         .map(|i| {
             let at = phoff + i * 56;
             let r = |o: u64| b.u64(at + o).unwrap_or(0);
-            Segment {
-                kind: b.u32(at).unwrap_or(0),
-                flags: b.u32(at + 4).unwrap_or(0),
-                offset: r(8),
-                vaddr: r(16),
-                filesz: r(32),
-                memsz: r(40),
-                align: r(48),
-            }
+            Segment { kind: b.u32(at).unwrap_or(0), flags: b.u32(at + 4).unwrap_or(0), offset: r(8), vaddr: r(16), filesz: r(32), memsz: r(40), align: r(48) }
         })
         .collect())
 }

@@ -96,7 +96,9 @@ fn strings(image: &Image, d: &Dynamic) -> std::result::Result<u64, String> {
     let off = table(image, "dynamic string table", addr, size)?;
     let strtab = image.bytes.slice(off, size).unwrap_or_default();
     for (tag, val) in &d.entries {
-        if matches!(*tag, DT_NEEDED | DT_SONAME | DT_RPATH | DT_RUNPATH | DT_AUXILIARY | DT_FILTER) && !strtab.get(*val as usize..).is_some_and(|s| s.contains(&0)) {
+        if matches!(*tag, DT_NEEDED | DT_SONAME | DT_RPATH | DT_RUNPATH | DT_AUXILIARY | DT_FILTER)
+            && !strtab.get(*val as usize..).is_some_and(|s| s.contains(&0))
+        {
             return Err(format!("a library name or path (dynamic tag {tag}) points outside the string table"));
         }
     }

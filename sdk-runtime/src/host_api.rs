@@ -24,11 +24,11 @@ pub const ABI_VERSION: u32 = openr_sys::HOST_ABI_VERSION;
 #[used]
 pub static openr_runtime_api_v1: HostApi = openr_sys::host_table!(crate::host_api, crate::host_api::panicked);
 
-pub use openr_sys::openr_host_api as HostApi;
 pub(crate) use crate::robot_api::{
-    close_primitive, control_primitive, delete_vector, joint_gain, joint_value, new_vector, open_primitive, sensor_value, set_cdt, sync_key,
-    volume_switch, vr_attach, vr_submit,
+    close_primitive, control_primitive, delete_vector, joint_gain, joint_value, new_vector, open_primitive, sensor_value, set_cdt, sync_key, volume_switch,
+    vr_attach, vr_submit,
 };
+pub use openr_sys::openr_host_api as HostApi;
 
 /// A panic inside the runtime's side of an OPEN-R call: said on stderr with the call
 /// and the object, and the run ends with a non-zero status (it is a bug of cargo-openr,
@@ -155,7 +155,16 @@ pub(crate) unsafe fn send(dest: *mut c_void, selector: u32, msg: *const c_void, 
     }
 }
 
-pub(crate) unsafe fn call(dest: *mut c_void, selector: u32, msg: *const c_void, size: usize, reply: *mut c_void, cap: usize, got: *mut usize, timeout_ms: u32) -> i32 {
+pub(crate) unsafe fn call(
+    dest: *mut c_void,
+    selector: u32,
+    msg: *const c_void,
+    size: usize,
+    reply: *mut c_void,
+    cap: usize,
+    got: *mut usize,
+    timeout_ms: u32,
+) -> i32 {
     let Some(rt) = rt() else { return -1 };
     // SAFETY: `msg` holds `size` readable bytes or is null (the host API's contract); copied at once.
     let data = unsafe { bytes(msg, size) }.to_vec();

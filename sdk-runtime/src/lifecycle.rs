@@ -60,7 +60,13 @@ enum Patience {
 }
 
 /// Waits for the answer on `rx`. `Ok(None)`: none came (watchdog, shutdown).
-fn await_answer(rt: &Runtime, rx: &Receiver<Vec<u8>>, watchdog: Duration, patience: Patience, late: impl Fn(Duration)) -> std::result::Result<Option<Vec<u8>>, Interrupted> {
+fn await_answer(
+    rt: &Runtime,
+    rx: &Receiver<Vec<u8>>,
+    watchdog: Duration,
+    patience: Patience,
+    late: impl Fn(Duration),
+) -> std::result::Result<Option<Vec<u8>>, Interrupted> {
     let start = Instant::now();
     let mut warned = false;
     loop {
@@ -124,7 +130,15 @@ fn hook(rt: &Runtime, slot: &ObjectSlot, sel: u32, watchdog: Duration, patience:
 }
 
 /// The boot sequence up to the Starts. Objects that answered Init are in `booted`.
-pub fn boot(rt: &Runtime, all: &[Arc<ObjectSlot>], connect: (&std::path::Path, &[cfg::Connection]), lenient: bool, watchdog: Duration, booted: &mut Vec<Arc<ObjectSlot>>, failures: &mut Failures) -> Result<std::result::Result<(), Interrupted>> {
+pub fn boot(
+    rt: &Runtime,
+    all: &[Arc<ObjectSlot>],
+    connect: (&std::path::Path, &[cfg::Connection]),
+    lenient: bool,
+    watchdog: Duration,
+    booted: &mut Vec<Arc<ObjectSlot>>,
+    failures: &mut Failures,
+) -> Result<std::result::Result<(), Interrupted>> {
     let (system, user): (Vec<_>, Vec<_>) = all.iter().partition(|s| s.oid < FIRST_OID);
     for slot in &system {
         if let Err(i) = hook(rt, slot, SEL_INIT, watchdog, Patience::Boot, failures) {
@@ -185,17 +199,21 @@ pub fn shutdown(rt: &Runtime, booted: &[Arc<ObjectSlot>], watchdog: Duration, fa
 }
 
 /// The connection phase: one CONNECT.CFG line at a time (object-model 2.8.1).
-fn connect_all(rt: &Runtime, path: &std::path::Path, conns: &[cfg::Connection], lenient: bool, watchdog: Duration, failures: &mut Failures) -> Result<std::result::Result<(), Interrupted>> {
+fn connect_all(
+    rt: &Runtime,
+    path: &std::path::Path,
+    conns: &[cfg::Connection],
+    lenient: bool,
+    watchdog: Duration,
+    failures: &mut Failures,
+) -> Result<std::result::Result<(), Interrupted>> {
     for c in conns {
         let (subject, observer) = (rt.service(&c.subject), rt.service(&c.observer));
         let (Some(subject), Some(observer)) = (subject, observer) else {
             let missing = if rt.service(&c.subject).is_none() { &c.subject } else { &c.observer };
             let mut names = rt.service_names();
             names.sort();
-            let msg = format!(
-                "unknown service `{missing}`; registered services: {}",
-                if names.is_empty() { "none".to_string() } else { names.join(", ") }
-            );
+            let msg = format!("unknown service `{missing}`; registered services: {}", if names.is_empty() { "none".to_string() } else { names.join(", ") });
             if lenient {
                 rt.diag.warn(&format!("{}:{}: {msg} (line skipped)", path.display(), c.line));
                 continue;
@@ -208,12 +226,20 @@ fn connect_all(rt: &Runtime, path: &std::path::Path, conns: &[cfg::Connection], 
         rt.sched.boot_turn();
         let rx = rt.call_start(observer.oid, observer.selector, msg);
         rt.sched.release();
-        let late = |waited: Duration| rt.diag.warn(&format!("{}:{}: the connection has not been answered for {:.1} s; still waiting", path.display(), c.line, waited.as_secs_f64()));
+        let late = |waited: Duration| {
+            rt.diag.warn(&format!("{}:{}: the connection has not been answered for {:.1} s; still waiting", path.display(), c.line, waited.as_secs_f64()))
+        };
         let answer = match rx {
             Ok(rx) => match await_answer(rt, &rx, watchdog, Patience::Boot, late) {
                 Ok(a) => a,
                 Err(i) => {
-                    failures.0.push(format!("{}:{}: the connection was not answered when signal {} came (observer `{}`)", path.display(), c.line, i.0, obs_slot.name()));
+                    failures.0.push(format!(
+                        "{}:{}: the connection was not answered when signal {} came (observer `{}`)",
+                        path.display(),
+                        c.line,
+                        i.0,
+                        obs_slot.name()
+                    ));
                     return Ok(Err(i));
                 }
             },

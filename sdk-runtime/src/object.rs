@@ -36,10 +36,7 @@ pub struct ObjectSlot {
 impl ObjectSlot {
     /// The object's name: its ocf NAME, else the `.BIN` file name.
     pub fn name(&self) -> &str {
-        self.module
-            .get()
-            .and_then(|m| m.ocf_name.as_deref())
-            .unwrap_or_else(|| self.bin.rsplit('/').next().unwrap_or(&self.bin))
+        self.module.get().and_then(|m| m.ocf_name.as_deref()).unwrap_or_else(|| self.bin.rsplit('/').next().unwrap_or(&self.bin))
     }
 
     pub fn is_stopped(&self) -> bool {

@@ -40,8 +40,7 @@ impl Observer {
     /// Whether going from `old` to `new` is an event for this observer.
     pub fn wants(&self, old: &PowerState, new: &PowerState) -> bool {
         let f = &self.filter;
-        let bits = ((old.robot_status ^ new.robot_status) & f.robot_status) != 0
-            || ((old.battery_status ^ new.battery_status) & f.battery_status) != 0;
+        let bits = ((old.robot_status ^ new.robot_status) & f.robot_status) != 0 || ((old.battery_status ^ new.battery_status) & f.battery_status) != 0;
         // Scalars: "every change" value, "not notify" value, else a target value.
         let scalar = |every: u32, never: u32, want: u32, o: u32, n: u32| -> bool {
             if want == never || o == n {
@@ -103,7 +102,14 @@ mod tests {
 
     #[test]
     fn bits_notify_on_both_edges() {
-        let o = observer(PowerState { robot_status: ORSB_MOTOR_POWER, remaining_capacity: 0xFFFE, temperature: 0xFFFE, time_dif: 0x7E, volume: 0xFE, ..Default::default() });
+        let o = observer(PowerState {
+            robot_status: ORSB_MOTOR_POWER,
+            remaining_capacity: 0xFFFE,
+            temperature: 0xFFFE,
+            time_dif: 0x7E,
+            volume: 0xFE,
+            ..Default::default()
+        });
         let a = initial_state(0);
         let mut b = a;
         b.robot_status |= ORSB_MOTOR_POWER;

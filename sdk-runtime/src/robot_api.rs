@@ -80,14 +80,20 @@ pub unsafe fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
         sys::GAIN_SET => read(gains).map_or(O_INVALID_ARG, |g| r.set_joint_gain(id, g)),
         sys::GAIN_REGISTER_DEFAULT => read(gains).map_or(O_INVALID_ARG, |g| r.register_default_joint_gain(id, g)),
         sys::GAIN_SET_DEFAULT => r.set_default_joint_gain(id),
-        sys::GAIN_GET => r.get_joint_gain(id).map_or_else(|e| e, |g| {
-            write(gains, g);
-            O_SUCCESS
-        }),
-        sys::GAIN_GET_DEFAULT => r.get_default_joint_gain(id).map_or_else(|e| e, |g| {
-            write(gains, g);
-            O_SUCCESS
-        }),
+        sys::GAIN_GET => r.get_joint_gain(id).map_or_else(
+            |e| e,
+            |g| {
+                write(gains, g);
+                O_SUCCESS
+            },
+        ),
+        sys::GAIN_GET_DEFAULT => r.get_default_joint_gain(id).map_or_else(
+            |e| e,
+            |g| {
+                write(gains, g);
+                O_SUCCESS
+            },
+        ),
         _ => O_INVALID_ARG,
     })
     .unwrap_or(O_FAIL)
@@ -136,16 +142,22 @@ pub unsafe fn sync_key(op: i32, key: u32, k1: *mut u32, k2: *mut u32) -> u32 {
         }
     };
     with_robot(|r| match op {
-        sys::SYNC_NEW => r.new_sync_key().map_or_else(|e| e, |k| {
-            put(k1, k);
-            O_SUCCESS
-        }),
+        sys::SYNC_NEW => r.new_sync_key().map_or_else(
+            |e| e,
+            |k| {
+                put(k1, k);
+                O_SUCCESS
+            },
+        ),
         sys::SYNC_CANCEL => r.cancel_sync_key(key),
-        sys::SYNC_DIVIDE => r.divide_sync_key(key).map_or_else(|e| e, |(a, b)| {
-            put(k1, a);
-            put(k2, b);
-            O_SUCCESS
-        }),
+        sys::SYNC_DIVIDE => r.divide_sync_key(key).map_or_else(
+            |e| e,
+            |(a, b)| {
+                put(k1, a);
+                put(k2, b);
+                O_SUCCESS
+            },
+        ),
         _ => O_INVALID_ARG,
     })
     .unwrap_or(O_FAIL)

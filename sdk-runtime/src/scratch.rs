@@ -95,12 +95,7 @@ fn private_dir() -> std::io::Result<PathBuf> {
 
 /// Creates `path`, which must not exist (not even as a link), and writes `bytes`.
 fn write_new(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let mut f = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .mode(0o700)
-        .custom_flags(libc::O_NOFOLLOW | libc::O_CLOEXEC)
-        .open(path)?;
+    let mut f = std::fs::OpenOptions::new().write(true).create_new(true).mode(0o700).custom_flags(libc::O_NOFOLLOW | libc::O_CLOEXEC).open(path)?;
     f.write_all(bytes)
 }
 

@@ -1,7 +1,7 @@
 //! `SetTimeEvent`: messages delivered to an object after a delay of virtual time,
 //! optionally periodic. The frame thread fires what is due after each frame.
-use std::collections::{BinaryHeap, HashMap};
 use std::cmp::Reverse;
+use std::collections::{BinaryHeap, HashMap};
 use std::sync::Mutex;
 use std::time::Duration;
 

@@ -16,12 +16,7 @@ const USAGE: &str = "usage: stubgen2 <stub.cfg> [<more.cfg> ...]\n\
 /// `stubgen2: <error>` goes to `err`, nothing is written, and the result is 1. Without
 /// arguments the usage goes to `err` and the result is 2; `-h`/`--help` as the only
 /// argument prints it on `out` and returns 0.
-pub fn run_stubgen2(
-    args: &[OsString],
-    cwd: &Path,
-    out: &mut dyn Write,
-    err: &mut dyn Write,
-) -> i32 {
+pub fn run_stubgen2(args: &[OsString], cwd: &Path, out: &mut dyn Write, err: &mut dyn Write) -> i32 {
     if args.is_empty() {
         let _ = write!(err, "stubgen2: no stub.cfg given\n{USAGE}");
         return 2;
@@ -38,8 +33,7 @@ pub fn run_stubgen2(
             (shown, real)
         })
         .collect();
-    let result = crate::parse::parse_named_files(&files)
-        .and_then(|cfg| crate::generate::write_outputs(&cfg, cwd).map(|_| cfg));
+    let result = crate::parse::parse_named_files(&files).and_then(|cfg| crate::generate::write_outputs(&cfg, cwd).map(|_| cfg));
     match result {
         Ok(cfg) => {
             for w in crate::warn::warnings(&cfg) {

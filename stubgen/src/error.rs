@@ -65,39 +65,16 @@ pub struct Error {
 }
 
 impl Error {
-    pub(crate) fn at(
-        kind: ErrorKind,
-        file: &Path,
-        line: usize,
-        message: impl Into<String>,
-    ) -> Self {
-        Error {
-            kind,
-            file: Some(file.to_path_buf()),
-            line: Some(line),
-            message: message.into(),
-            source: None,
-        }
+    pub(crate) fn at(kind: ErrorKind, file: &Path, line: usize, message: impl Into<String>) -> Self {
+        Error { kind, file: Some(file.to_path_buf()), line: Some(line), message: message.into(), source: None }
     }
 
     pub(crate) fn io(kind: ErrorKind, file: &Path, what: &str, err: std::io::Error) -> Self {
-        Error {
-            kind,
-            file: Some(file.to_path_buf()),
-            line: None,
-            message: format!("{what}: {err}"),
-            source: Some(err),
-        }
+        Error { kind, file: Some(file.to_path_buf()), line: None, message: format!("{what}: {err}"), source: Some(err) }
     }
 
     pub(crate) fn bare(kind: ErrorKind, message: impl Into<String>) -> Self {
-        Error {
-            kind,
-            file: None,
-            line: None,
-            message: message.into(),
-            source: None,
-        }
+        Error { kind, file: None, line: None, message: message.into(), source: None }
     }
 
     /// The kind of error.
@@ -133,9 +110,7 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        self.source
-            .as_ref()
-            .map(|e| e as &(dyn std::error::Error + 'static))
+        self.source.as_ref().map(|e| e as &(dyn std::error::Error + 'static))
     }
 }
 

@@ -68,29 +68,11 @@ fn context(cfg: &StubCfg) -> Ctx<'_> {
         num_subject: cfg.subjects.len(),
         num_observer: cfg.observers.len(),
         num_of_hook: NUM_OF_HOOK,
-        hooks: HOOKS
-            .iter()
-            .enumerate()
-            .map(|(i, &name)| HookCtx {
-                index: i,
-                name,
-                selector: i as u64,
-            })
-            .collect(),
+        hooks: HOOKS.iter().enumerate().map(|(i, &name)| HookCtx { index: i, name, selector: i as u64 }).collect(),
         subjects: services(&cfg.subjects, NUM_OF_HOOK, NUM_OF_HOOK + s),
         observers: services(&cfg.observers, NUM_OF_HOOK + 2 * s, NUM_OF_HOOK + 2 * s + o),
         num_of_basic_entries: basic,
-        extras: cfg
-            .extras
-            .iter()
-            .enumerate()
-            .map(|(i, name)| ExtraCtx {
-                index: i,
-                name,
-                stub: format!("_{name}stub"),
-                selector: basic + i as u64,
-            })
-            .collect(),
+        extras: cfg.extras.iter().enumerate().map(|(i, name)| ExtraCtx { index: i, name, stub: format!("_{name}stub"), selector: basic + i as u64 }).collect(),
     }
 }
 
@@ -115,68 +97,29 @@ fn services(list: &[Service], first1: u64, first2: u64) -> Vec<ServiceCtx<'_>> {
 /// so that `generate` never emits code that cannot compile because of the configuration.
 pub(crate) fn validate(cfg: &StubCfg) -> Result<(), Error> {
     if cfg.object_name.is_empty() {
-        return Err(Error::bare(
-            ErrorKind::NoObjectName,
-            "no ObjectName: expected 'ObjectName : <ClassName>'",
-        ));
+        return Err(Error::bare(ErrorKind::NoObjectName, "no ObjectName: expected 'ObjectName : <ClassName>'"));
     }
     if !is_c_identifier(&cfg.object_name) {
-        return Err(Error::bare(
-            ErrorKind::InvalidObjectName,
-            format!(
-                "ObjectName '{}' is not a valid C++ class name",
-                cfg.object_name
-            ),
-        ));
+        return Err(Error::bare(ErrorKind::InvalidObjectName, format!("ObjectName '{}' is not a valid C++ class name", cfg.object_name)));
     }
     if cfg.subjects.is_empty() {
-        return Err(Error::bare(
-            ErrorKind::NoSubject,
-            crate::parse::msg::NO_SUBJECT,
-        ));
+        return Err(Error::bare(ErrorKind::NoSubject, crate::parse::msg::NO_SUBJECT));
     }
     if cfg.observers.is_empty() {
-        return Err(Error::bare(
-            ErrorKind::NoObserver,
-            crate::parse::msg::NO_OBSERVER,
-        ));
+        return Err(Error::bare(ErrorKind::NoObserver, crate::parse::msg::NO_OBSERVER));
     }
     for list in [&cfg.subjects, &cfg.observers] {
         for svc in list {
             let err = |kind, m: String| Error::at(kind, &svc.file, svc.line, m);
-            if svc.sub_name.is_empty()
-                || !svc
-                    .sub_name
-                    .bytes()
-                    .all(|b| b.is_ascii_alphanumeric() || b == b'_')
-            {
-                return Err(err(
-                    ErrorKind::InvalidSubName,
-                    format!(
-                        "SubName '{}' is not made of C identifier characters",
-                        svc.sub_name
-                    ),
-                ));
+            if svc.sub_name.is_empty() || !svc.sub_name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
+                return Err(err(ErrorKind::InvalidSubName, format!("SubName '{}' is not made of C identifier characters", svc.sub_name)));
             }
-            if svc
-                .name
-                .chars()
-                .any(|c| !(' '..='~').contains(&c) || c == '"' || c == '\\')
-            {
-                return Err(err(
-                    ErrorKind::InvalidServiceName,
-                    format!(
-                        "service name \"{}\" cannot be written as a C string literal",
-                        svc.name
-                    ),
-                ));
+            if svc.name.chars().any(|c| !(' '..='~').contains(&c) || c == '"' || c == '\\') {
+                return Err(err(ErrorKind::InvalidServiceName, format!("service name \"{}\" cannot be written as a C string literal", svc.name)));
             }
             for f in [&svc.func1, &svc.func2].into_iter().flatten() {
                 if !is_c_identifier(f) {
-                    return Err(err(
-                        ErrorKind::InvalidFunctionName,
-                        format!("'{f}' is not a valid C++ member function name"),
-                    ));
+                    return Err(err(ErrorKind::InvalidFunctionName, format!("'{f}' is not a valid C++ member function name")));
                 }
             }
         }
@@ -184,16 +127,10 @@ pub(crate) fn validate(cfg: &StubCfg) -> Result<(), Error> {
     let mut seen = HashSet::new();
     for x in &cfg.extras {
         if !is_c_identifier(x) || is_reserved_extra(x) {
-            return Err(Error::bare(
-                ErrorKind::InvalidExtraName,
-                format!("Extra '{x}' cannot be used as an entry name"),
-            ));
+            return Err(Error::bare(ErrorKind::InvalidExtraName, format!("Extra '{x}' cannot be used as an entry name")));
         }
         if !seen.insert(x.as_str()) || cfg.extras.iter().any(|y| *y == format!("{x}stub")) {
-            return Err(Error::bare(
-                ErrorKind::DuplicateExtra,
-                format!("Extra '{x}' is given twice or clashes with another extra"),
-            ));
+            return Err(Error::bare(ErrorKind::DuplicateExtra, format!("Extra '{x}' is given twice or clashes with another extra")));
         }
     }
     Ok(())
@@ -212,29 +149,18 @@ fn registry(templates: &[(&str, &'static str)]) -> Result<Handlebars<'static>, E
     hb.register_escape_fn(handlebars::no_escape);
     hb.set_strict_mode(true);
     for (name, text) in templates {
-        hb.register_template_string(name, text)
-            .map_err(|e| Error::bare(ErrorKind::Template, format!("template {name}.hbs: {e}")))?;
+        hb.register_template_string(name, text).map_err(|e| Error::bare(ErrorKind::Template, format!("template {name}.hbs: {e}")))?;
     }
     Ok(hb)
 }
 
 fn render(hb: &Handlebars<'_>, template: &str, ctx: &impl Serialize) -> Result<String, Error> {
-    hb.render(template, ctx).map_err(|e| {
-        Error::bare(
-            ErrorKind::Template,
-            format!("rendering {template}.hbs: {e}"),
-        )
-    })
+    hb.render(template, ctx).map_err(|e| Error::bare(ErrorKind::Template, format!("rendering {template}.hbs: {e}")))
 }
 
 /// The names of the generated files, in the order [`generate`] returns them.
 pub fn output_names(cfg: &StubCfg) -> [String; 4] {
-    [
-        "def.h".to_owned(),
-        "entry.h".to_owned(),
-        format!("{}Stub.h", cfg.object_name),
-        format!("{}Stub.cc", cfg.object_name),
-    ]
+    ["def.h".to_owned(), "entry.h".to_owned(), format!("{}Stub.h", cfg.object_name), format!("{}Stub.cc", cfg.object_name)]
 }
 
 /// Render the four output files in memory: `(file name, contents)` for `def.h`, `entry.h`,
@@ -243,11 +169,7 @@ pub fn generate(cfg: &StubCfg) -> Result<Vec<(String, String)>, Error> {
     validate(cfg)?;
     let hb = registry(&TEMPLATES)?;
     let ctx = context(cfg);
-    output_names(cfg)
-        .into_iter()
-        .zip(TEMPLATES)
-        .map(|(file, (template, _))| Ok((file, render(&hb, template, &ctx)?)))
-        .collect()
+    output_names(cfg).into_iter().zip(TEMPLATES).map(|(file, (template, _))| Ok((file, render(&hb, template, &ctx)?))).collect()
 }
 
 /// Generate all files in memory, then write them into `dir` (which must exist).
@@ -343,16 +265,6 @@ mod tests {
         struct C {
             object_name: &'static str,
         }
-        assert_eq!(
-            render(
-                &hb,
-                "t",
-                &C {
-                    object_name: "a<b>&\""
-                }
-            )
-            .unwrap(),
-            "a<b>&\""
-        );
+        assert_eq!(render(&hb, "t", &C { object_name: "a<b>&\"" }).unwrap(), "a<b>&\"");
     }
 }

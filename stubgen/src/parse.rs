@@ -72,8 +72,7 @@ pub(crate) fn parse_named_files(files: &[(PathBuf, PathBuf)]) -> Result<StubCfg,
     }
     let mut sources = Vec::with_capacity(files.len());
     for (name, path) in files {
-        let bytes =
-            std::fs::read(path).map_err(|e| Error::io(ErrorKind::Read, name, "cannot read", e))?;
+        let bytes = std::fs::read(path).map_err(|e| Error::io(ErrorKind::Read, name, "cannot read", e))?;
         sources.push((name.clone(), bytes));
     }
     parse_sources(&sources)
@@ -199,35 +198,16 @@ pub(crate) fn parse_sources(sources: &[(PathBuf, Vec<u8>)]) -> Result<StubCfg, E
         }
     }
 
-    let end = Loc {
-        file: last_file,
-        line: line_count(last_bytes).max(1),
-    };
+    let end = Loc { file: last_file, line: line_count(last_bytes).max(1) };
     check_count(&st.num_subject, st.subjects.len(), &end, &SUBJECT_RULE)?;
     check_count(&st.num_observer, st.observers.len(), &end, &OBSERVER_RULE)?;
 
     let object_name = match st.object_name {
-        None => {
-            return Err(end.err(
-                ErrorKind::NoObjectName,
-                "no ObjectName line: expected 'ObjectName : <ClassName>'",
-            ))
-        }
-        Some(Declared { value: None, loc }) => {
-            return Err(loc.err(
-                ErrorKind::NoObjectName,
-                "ObjectName has no value: expected 'ObjectName : <ClassName>'",
-            ))
-        }
-        Some(Declared {
-            value: Some(name),
-            loc,
-        }) => {
+        None => return Err(end.err(ErrorKind::NoObjectName, "no ObjectName line: expected 'ObjectName : <ClassName>'")),
+        Some(Declared { value: None, loc }) => return Err(loc.err(ErrorKind::NoObjectName, "ObjectName has no value: expected 'ObjectName : <ClassName>'")),
+        Some(Declared { value: Some(name), loc }) => {
             if !is_c_identifier(&name) {
-                return Err(loc.err(
-                    ErrorKind::InvalidObjectName,
-                    format!("ObjectName '{name}' is not a valid C++ class name"),
-                ));
+                return Err(loc.err(ErrorKind::InvalidObjectName, format!("ObjectName '{name}' is not a valid C++ class name")));
             }
             if name.len() > MAX_OBJECT_NAME {
                 return Err(loc.err(
@@ -245,12 +225,7 @@ pub(crate) fn parse_sources(sources: &[(PathBuf, Vec<u8>)]) -> Result<StubCfg, E
         }
     };
 
-    Ok(StubCfg {
-        object_name,
-        subjects: st.subjects,
-        observers: st.observers,
-        extras: st.extras.into_iter().map(|e| e.value).collect(),
-    })
+    Ok(StubCfg { object_name, subjects: st.subjects, observers: st.observers, extras: st.extras.into_iter().map(|e| e.value).collect() })
 }
 
 /// How one of the two declared counts is checked.
@@ -284,30 +259,14 @@ const OBSERVER_RULE: CountRule = CountRule {
     mismatch_msg: msg::OBSERVER_MISMATCH,
 };
 
-fn check_count(
-    declared: &Option<Declared<'_, Count>>,
-    accepted: usize,
-    end: &Loc<'_>,
-    rule: &CountRule,
-) -> Result<(), Error> {
-    let CountRule {
-        keyword,
-        what,
-        letter,
-        none_kind,
-        none_msg,
-        mismatch_kind,
-        mismatch_msg,
-    } = *rule;
+fn check_count(declared: &Option<Declared<'_, Count>>, accepted: usize, end: &Loc<'_>, rule: &CountRule) -> Result<(), Error> {
+    let CountRule { keyword, what, letter, none_kind, none_msg, mismatch_kind, mismatch_msg } = *rule;
     let Some(Declared { value, loc }) = declared else {
         return Err(end.err(none_kind, format!("{none_msg} (no {keyword} line)")));
     };
     match value {
         Count::Empty => Err(loc.err(none_kind, format!("{none_msg} ({keyword} has no value)"))),
-        Count::NotNumber(t) => Err(loc.err(
-            none_kind,
-            format!("{none_msg} ({keyword} value '{t}' is not a number)"),
-        )),
+        Count::NotNumber(t) => Err(loc.err(none_kind, format!("{none_msg} ({keyword} value '{t}' is not a number)"))),
         Count::Number(0) => Err(loc.err(none_kind, format!("{none_msg} ({keyword} is 0)"))),
         Count::Number(n) if *n != accepted => Err(loc.err(
             mismatch_kind,
@@ -320,31 +279,13 @@ fn check_count(
     }
 }
 
-fn parse_keyword_line<'a>(
-    st: &mut State<'a>,
-    kw: Keyword,
-    value: &str,
-    loc: Loc<'a>,
-) -> Result<(), Error> {
+fn parse_keyword_line<'a>(st: &mut State<'a>, kw: Keyword, value: &str, loc: Loc<'a>) -> Result<(), Error> {
     match kw {
         Keyword::ObjectName => {
-            st.object_name = Some(Declared {
-                value: first_token(value).map(str::to_owned),
-                loc,
-            });
+            st.object_name = Some(Declared { value: first_token(value).map(str::to_owned), loc });
         }
-        Keyword::NumOfSubject => {
-            st.num_subject = Some(Declared {
-                value: count(value),
-                loc,
-            })
-        }
-        Keyword::NumOfObserver => {
-            st.num_observer = Some(Declared {
-                value: count(value),
-                loc,
-            })
-        }
+        Keyword::NumOfSubject => st.num_subject = Some(Declared { value: count(value), loc }),
+        Keyword::NumOfObserver => st.num_observer = Some(Declared { value: count(value), loc }),
         Keyword::Service => {
             if let Some(svc) = parse_service(value, &loc)? {
                 let list = match svc.kind {
@@ -358,27 +299,13 @@ fn parse_keyword_line<'a>(
         }
         Keyword::Extra => {
             let name = parse_extra(value, &loc)?;
-            if let Some(prev) = st.extras.iter().find(|e| {
-                e.value == name
-                    || e.value == format!("{name}stub")
-                    || name == format!("{}stub", e.value)
-            }) {
+            if let Some(prev) = st.extras.iter().find(|e| e.value == name || e.value == format!("{name}stub") || name == format!("{}stub", e.value)) {
                 let detail = if prev.value == name {
                     format!("Extra '{name}' is given twice")
                 } else {
-                    format!(
-                        "Extras '{}' and '{name}' give clashing entry names",
-                        prev.value
-                    )
+                    format!("Extras '{}' and '{name}' give clashing entry names", prev.value)
                 };
-                return Err(loc.err(
-                    ErrorKind::DuplicateExtra,
-                    format!(
-                        "{detail} (first on {}:{})",
-                        prev.loc.file.display(),
-                        prev.loc.line
-                    ),
-                ));
+                return Err(loc.err(ErrorKind::DuplicateExtra, format!("{detail} (first on {}:{})", prev.loc.file.display(), prev.loc.line)));
             }
             st.extras.push(Declared { value: name, loc });
         }
@@ -415,14 +342,10 @@ fn parse_service(value: &str, loc: &Loc<'_>) -> Result<Option<Service>, Error> {
     let func2 = parse_function(fields.get(2).copied(), 2, loc)?;
 
     let name = &quoted[1..quoted.len() - 1];
-    if let Some(c) = name
-        .chars()
-        .find(|&c| !(' '..='~').contains(&c) || c == '"' || c == '\\')
-    {
-        return Err(loc.err(
-            ErrorKind::InvalidServiceName,
-            format!("service name \"{name}\" contains {c:?}; only printable ASCII without '\"' and '\\' is allowed"),
-        ));
+    if let Some(c) = name.chars().find(|&c| !(' '..='~').contains(&c) || c == '"' || c == '\\') {
+        return Err(
+            loc.err(ErrorKind::InvalidServiceName, format!("service name \"{name}\" contains {c:?}; only printable ASCII without '\"' and '\\' is allowed"))
+        );
     }
     if name.len() > MAX_SERVICE_NAME {
         return Err(loc.err(
@@ -436,16 +359,8 @@ fn parse_service(value: &str, loc: &Loc<'_>) -> Result<Option<Service>, Error> {
         ));
     }
     let sub_name = parts[1];
-    if sub_name.is_empty()
-        || !sub_name
-            .bytes()
-            .all(|b| b.is_ascii_alphanumeric() || b == b'_')
-    {
-        let prefix = if kind == ServiceKind::Subject {
-            "sbj"
-        } else {
-            "obs"
-        };
+    if sub_name.is_empty() || !sub_name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
+        let prefix = if kind == ServiceKind::Subject { "sbj" } else { "obs" };
         return Err(loc.err(
             ErrorKind::InvalidSubName,
             format!(
@@ -469,34 +384,21 @@ fn parse_service(value: &str, loc: &Loc<'_>) -> Result<Option<Service>, Error> {
 /// A function field: `null` or `Name()` (blanks before `()` allowed).
 fn parse_function(field: Option<&str>, n: usize, loc: &Loc<'_>) -> Result<Option<String>, Error> {
     let Some(field) = field else {
-        return Err(loc.err(
-            ErrorKind::MissingFunctionParens,
-            format!(
-                "{} (function field {n} is missing; write 'null' or 'Name()')",
-                msg::MISSING_FUNC_PARENS
-            ),
-        ));
+        return Err(
+            loc.err(ErrorKind::MissingFunctionParens, format!("{} (function field {n} is missing; write 'null' or 'Name()')", msg::MISSING_FUNC_PARENS))
+        );
     };
     if field == "null" {
         return Ok(None);
     }
     let Some(name) = field.strip_suffix("()") else {
-        return Err(loc.err(
-            ErrorKind::MissingFunctionParens,
-            format!(
-                "{} (function field {n} is '{field}'; write 'null' or 'Name()')",
-                msg::MISSING_FUNC_PARENS
-            ),
-        ));
+        return Err(
+            loc.err(ErrorKind::MissingFunctionParens, format!("{} (function field {n} is '{field}'; write 'null' or 'Name()')", msg::MISSING_FUNC_PARENS))
+        );
     };
     let name = name.trim_end_matches(BLANKS);
     if !is_c_identifier(name) {
-        return Err(loc.err(
-            ErrorKind::InvalidFunctionName,
-            format!(
-                "function field {n} '{field}': '{name}' is not a valid C++ member function name"
-            ),
-        ));
+        return Err(loc.err(ErrorKind::InvalidFunctionName, format!("function field {n} '{field}': '{name}' is not a valid C++ member function name")));
     }
     Ok(Some(name.to_owned()))
 }
@@ -505,30 +407,16 @@ fn parse_function(field: Option<&str>, n: usize, loc: &Loc<'_>) -> Result<Option
 fn parse_extra(value: &str, loc: &Loc<'_>) -> Result<String, Error> {
     let token = first_token(value).unwrap_or("");
     let Some(name) = token.strip_suffix("()") else {
-        let detail = if token.is_empty() {
-            "Extra has no value".to_owned()
-        } else {
-            format!("Extra token is '{token}'")
-        };
-        return Err(loc.err(
-            ErrorKind::MissingExtraParens,
-            format!(
-                "{} ({detail}; write 'Extra : Name()' with no blank before '()')",
-                msg::MISSING_EXTRA_PARENS
-            ),
-        ));
+        let detail = if token.is_empty() { "Extra has no value".to_owned() } else { format!("Extra token is '{token}'") };
+        return Err(
+            loc.err(ErrorKind::MissingExtraParens, format!("{} ({detail}; write 'Extra : Name()' with no blank before '()')", msg::MISSING_EXTRA_PARENS))
+        );
     };
     if !is_c_identifier(name) {
-        return Err(loc.err(
-            ErrorKind::InvalidExtraName,
-            format!("Extra '{token}': '{name}' is not a valid C++ member function name"),
-        ));
+        return Err(loc.err(ErrorKind::InvalidExtraName, format!("Extra '{token}': '{name}' is not a valid C++ member function name")));
     }
     if is_reserved_extra(name) {
-        return Err(loc.err(
-            ErrorKind::InvalidExtraName,
-            format!("Extra '{token}': the C function '_{name}' would clash with a generated stub function"),
-        ));
+        return Err(loc.err(ErrorKind::InvalidExtraName, format!("Extra '{token}': the C function '_{name}' would clash with a generated stub function")));
     }
     Ok(name.to_owned())
 }
@@ -538,21 +426,8 @@ pub(crate) fn is_reserved_extra(name: &str) -> bool {
     if matches!(name, "Init" | "Start" | "Stop" | "Destroy") {
         return true;
     }
-    const NUMBERED: [&str; 9] = [
-        "Control",
-        "Ready",
-        "Connect",
-        "Notify",
-        "hookstub",
-        "controlstub",
-        "readystub",
-        "connectstub",
-        "notifystub",
-    ];
-    NUMBERED.iter().any(|p| {
-        name.strip_prefix(p)
-            .is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
-    })
+    const NUMBERED: [&str; 9] = ["Control", "Ready", "Connect", "Notify", "hookstub", "controlstub", "readystub", "connectstub", "notifystub"];
+    NUMBERED.iter().any(|p| name.strip_prefix(p).is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit())))
 }
 
 /// C++98 keywords (plus a few alternative tokens), which cannot name a class or member.
@@ -647,22 +522,10 @@ mod tests {
 
     #[test]
     fn keyword_recognition() {
-        assert!(matches!(
-            keyword("ObjectName : X"),
-            Some((Keyword::ObjectName, " X"))
-        ));
-        assert!(matches!(
-            keyword(" \tObjectName\t:X"),
-            Some((Keyword::ObjectName, "X"))
-        ));
-        assert!(matches!(
-            keyword("NumOfSubject:1"),
-            Some((Keyword::NumOfSubject, "1"))
-        ));
-        assert!(matches!(
-            keyword("NumOfOObserver :1"),
-            Some((Keyword::NumOfObserver, "1"))
-        ));
+        assert!(matches!(keyword("ObjectName : X"), Some((Keyword::ObjectName, " X"))));
+        assert!(matches!(keyword(" \tObjectName\t:X"), Some((Keyword::ObjectName, "X"))));
+        assert!(matches!(keyword("NumOfSubject:1"), Some((Keyword::NumOfSubject, "1"))));
+        assert!(matches!(keyword("NumOfOObserver :1"), Some((Keyword::NumOfObserver, "1"))));
         assert!(keyword("objectName : X").is_none());
         assert!(keyword("ObjectNameX : X").is_none());
         assert!(keyword("ObjectName X : X").is_none());
@@ -693,14 +556,7 @@ mod tests {
 
     #[test]
     fn reserved_extras() {
-        for n in [
-            "Init",
-            "Destroy",
-            "Control0",
-            "Notify12",
-            "hookstub3",
-            "readystub0",
-        ] {
+        for n in ["Init", "Destroy", "Control0", "Notify12", "hookstub3", "readystub0"] {
             assert!(is_reserved_extra(n), "{n}");
         }
         for n in ["Control", "ListenCont", "Initialize", "hookstub", "Ready1x"] {
@@ -710,21 +566,10 @@ mod tests {
 
     #[test]
     fn function_fields() {
-        let loc = Loc {
-            file: Path::new("f"),
-            line: 1,
-        };
+        let loc = Loc { file: Path::new("f"), line: 1 };
         assert_eq!(parse_function(Some("null"), 1, &loc).unwrap(), None);
-        assert_eq!(
-            parse_function(Some("Foo()"), 1, &loc).unwrap().as_deref(),
-            Some("Foo")
-        );
-        assert_eq!(
-            parse_function(Some("Foo \t()"), 1, &loc)
-                .unwrap()
-                .as_deref(),
-            Some("Foo")
-        );
+        assert_eq!(parse_function(Some("Foo()"), 1, &loc).unwrap().as_deref(), Some("Foo"));
+        assert_eq!(parse_function(Some("Foo \t()"), 1, &loc).unwrap().as_deref(), Some("Foo"));
         let e = parse_function(Some("NULL"), 2, &loc).unwrap_err();
         assert_eq!(e.kind(), ErrorKind::MissingFunctionParens);
         let e = parse_function(None, 2, &loc).unwrap_err();

@@ -32,10 +32,7 @@ impl fmt::Display for Warning {
 /// For each service of `list`, how many services before it have the same SubName
 /// (0 for the first use of a SubName).
 pub(crate) fn repeats(list: &[Service]) -> Vec<usize> {
-    list.iter()
-        .enumerate()
-        .map(|(i, svc)| list[..i].iter().filter(|s| s.sub_name == svc.sub_name).count())
-        .collect()
+    list.iter().enumerate().map(|(i, svc)| list[..i].iter().filter(|s| s.sub_name == svc.sub_name).count()).collect()
 }
 
 /// The warnings for `cfg`, in file order within each kind (subjects first).

@@ -9,18 +9,11 @@ fn run(args: &[&str], cwd: &Path) -> (i32, String, String) {
     let args: Vec<OsString> = args.iter().map(OsString::from).collect();
     let (mut out, mut err) = (Vec::new(), Vec::new());
     let code = run_stubgen2(&args, cwd, &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-    )
+    (code, String::from_utf8(out).unwrap(), String::from_utf8(err).unwrap())
 }
 
 fn files_in(dir: &Path) -> Vec<String> {
-    let mut v: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
+    let mut v: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     v.sort();
     v
 }
@@ -61,15 +54,7 @@ fn success_prints_the_summary_and_writes_into_cwd() {
          Extra function = Second\n"
     );
     // Outputs go to cwd, not next to the input.
-    assert_eq!(
-        files_in(&cwd),
-        [
-            "SampleSubjectStub.cc",
-            "SampleSubjectStub.h",
-            "def.h",
-            "entry.h"
-        ]
-    );
+    assert_eq!(files_in(&cwd), ["SampleSubjectStub.cc", "SampleSubjectStub.h", "def.h", "entry.h"]);
     assert_eq!(files_in(dir.path()), ["robot", "stub.cfg"]);
     let cfg = stubgen::parse_str("x", CFG).unwrap();
     assert_eq!(out, stubgen::summary(&cfg));
@@ -82,9 +67,7 @@ fn existing_outputs_are_overwritten() {
     std::fs::write(dir.path().join("def.h"), "stale").unwrap();
     let (code, _, _) = run(&["stub.cfg"], dir.path());
     assert_eq!(code, 0);
-    assert!(std::fs::read_to_string(dir.path().join("def.h"))
-        .unwrap()
-        .contains("sbjSendString"));
+    assert!(std::fs::read_to_string(dir.path().join("def.h")).unwrap().contains("sbjSendString"));
 }
 
 #[test]
@@ -96,18 +79,10 @@ fn error_writes_nothing_and_exits_1() {
     let (code, out, err) = run(&["stub.cfg"], dir.path());
     assert_eq!(code, 1);
     assert_eq!(out, "");
-    assert!(
-        err.starts_with(
-            "stubgen2: stub.cfg:2: Inconsitency found between service and numOfOSubject."
-        ),
-        "{err}"
-    );
+    assert!(err.starts_with("stubgen2: stub.cfg:2: Inconsitency found between service and numOfOSubject."), "{err}");
     assert!(err.ends_with('\n') && err.lines().count() == 1, "{err}");
     assert_eq!(files_in(dir.path()), ["def.h", "stub.cfg"]);
-    assert_eq!(
-        std::fs::read_to_string(dir.path().join("def.h")).unwrap(),
-        "previous"
-    );
+    assert_eq!(std::fs::read_to_string(dir.path().join("def.h")).unwrap(), "previous");
 }
 
 #[test]
@@ -115,10 +90,7 @@ fn unreadable_file_exits_1() {
     let dir = tempfile::tempdir().unwrap();
     let (code, out, err) = run(&["missing.cfg"], dir.path());
     assert_eq!((code, out.as_str()), (1, ""));
-    assert!(
-        err.starts_with("stubgen2: missing.cfg: cannot read: "),
-        "{err}"
-    );
+    assert!(err.starts_with("stubgen2: missing.cfg: cannot read: "), "{err}");
 }
 
 #[test]
@@ -170,10 +142,7 @@ fn write_failure_exits_1() {
     std::fs::write(dir.path().join("entry.h/x"), "").unwrap();
     let (code, out, err) = run(&["stub.cfg"], dir.path());
     assert_eq!((code, out.as_str()), (1, ""));
-    assert!(
-        err.contains("entry.h: cannot write: is a directory"),
-        "{err}"
-    );
+    assert!(err.contains("entry.h: cannot write: is a directory"), "{err}");
     assert_eq!(files_in(dir.path()), ["entry.h", "stub.cfg"]);
 }
 
@@ -185,24 +154,17 @@ fn a_repeated_subname_is_a_warning_with_file_and_line() {
     let (code, out, err) = run(&["stub.cfg"], dir.path());
     assert_eq!(code, 0, "{err}");
     assert!(out.starts_with("Object = SampleSubject\n"), "{out}");
-    assert!(
-        err.starts_with("stubgen2: stub.cfg:6: warning: SubName 'SendString' is already used by the subject service on stub.cfg:4;"),
-        "{err}"
-    );
+    assert!(err.starts_with("stubgen2: stub.cfg:6: warning: SubName 'SendString' is already used by the subject service on stub.cfg:4;"), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     // def.h keeps Sony's two definition lines; the second is compiled under another name.
     let def = std::fs::read_to_string(dir.path().join("def.h")).unwrap();
     assert!(def.contains("const int sbjSendString = 0;\n"), "{def}");
-    assert!(
-        def.contains("#define sbjSendString openr_repeated_sbjSendString_1\nconst int sbjSendString = 1;\n#undef sbjSendString\n"),
-        "{def}"
-    );
+    assert!(def.contains("#define sbjSendString openr_repeated_sbjSendString_1\nconst int sbjSendString = 1;\n#undef sbjSendString\n"), "{def}");
 }
 
 /// `CFG` with ObjectName and the first subject's SubName replaced.
 fn cfg_named(object: &str, sub: &str) -> String {
-    CFG.replace("ObjectName : SampleSubject", &format!("ObjectName : {object}"))
-        .replace("SampleSubject.SendString.", &format!("SampleSubject.{sub}."))
+    CFG.replace("ObjectName : SampleSubject", &format!("ObjectName : {object}")).replace("SampleSubject.SendString.", &format!("SampleSubject.{sub}."))
 }
 
 #[test]

@@ -25,21 +25,11 @@ fn include_dir() -> PathBuf {
 
 /// Run g++ in `dir`; Err(command line + output) on failure.
 fn gxx(dir: &Path, args: &[&str]) -> Result<(), String> {
-    let out = Command::new("g++")
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run g++ (the host C++ compiler is required): {e}"));
+    let out = Command::new("g++").args(args).current_dir(dir).output().unwrap_or_else(|e| panic!("cannot run g++ (the host C++ compiler is required): {e}"));
     if out.status.success() {
         Ok(())
     } else {
-        Err(format!(
-            "g++ {} (in {}) failed:\n{}{}",
-            args.join(" "),
-            dir.display(),
-            String::from_utf8_lossy(&out.stdout),
-            String::from_utf8_lossy(&out.stderr)
-        ))
+        Err(format!("g++ {} (in {}) failed:\n{}{}", args.join(" "), dir.display(), String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr)))
     }
 }
 
@@ -47,15 +37,8 @@ fn write_generated(cfg: &StubCfg, dir: &Path) {
     stubgen::write_outputs(cfg, dir).unwrap_or_else(|e| panic!("{e}"));
 }
 
-const FIXTURES: [&str; 7] = [
-    "objectcomm-subject.cfg",
-    "objectcomm-observer.cfg",
-    "echoserver.cfg",
-    "tinyftpd.cfg",
-    "monet.cfg",
-    "balltrackinghead7.cfg",
-    "all-functions.cfg",
-];
+const FIXTURES: [&str; 7] =
+    ["objectcomm-subject.cfg", "objectcomm-observer.cfg", "echoserver.cfg", "tinyftpd.cfg", "monet.cfg", "balltrackinghead7.cfg", "all-functions.cfg"];
 
 fn fixture(name: &str) -> StubCfg {
     stubgen::parse_files(&[good(name)]).unwrap_or_else(|e| panic!("{e}"))
@@ -68,28 +51,14 @@ fn def_h_and_entry_h_are_cxx98_and_can_be_included_twice() {
         let dir = tempfile::tempdir().unwrap();
         write_generated(&cfg, dir.path());
         // A stand-in for the SDK's Types.h, so that this test depends on nothing else.
-        std::fs::write(
-            dir.path().join("Types.h"),
-            "#ifndef TYPES_H\n#define TYPES_H\ntypedef unsigned int longword;\ntypedef longword Selector;\n#endif\n",
-        )
-        .unwrap();
-        let mut uses =
-            String::from("int use() {\n    int n = numOfSubject + numOfObserver + numOfHook;\n");
-        for s in &cfg.subjects {
-            writeln!(
-                uses,
-                "    n += sbj{0} + (int)Entry_Control[sbj{0}] + (int)Entry_Ready[sbj{0}];",
-                s.sub_name
-            )
+        std::fs::write(dir.path().join("Types.h"), "#ifndef TYPES_H\n#define TYPES_H\ntypedef unsigned int longword;\ntypedef longword Selector;\n#endif\n")
             .unwrap();
+        let mut uses = String::from("int use() {\n    int n = numOfSubject + numOfObserver + numOfHook;\n");
+        for s in &cfg.subjects {
+            writeln!(uses, "    n += sbj{0} + (int)Entry_Control[sbj{0}] + (int)Entry_Ready[sbj{0}];", s.sub_name).unwrap();
         }
         for o in &cfg.observers {
-            writeln!(
-                uses,
-                "    n += obs{0} + (int)Entry_Connect[obs{0}] + (int)Entry_Notify[obs{0}];",
-                o.sub_name
-            )
-            .unwrap();
+            writeln!(uses, "    n += obs{0} + (int)Entry_Connect[obs{0}] + (int)Entry_Notify[obs{0}];", o.sub_name).unwrap();
         }
         for x in &cfg.extras {
             writeln!(uses, "    n += (int)Extra_Entry[entry{x}];").unwrap();
@@ -102,23 +71,10 @@ fn def_h_and_entry_h_are_cxx98_and_can_be_included_twice() {
             std::fs::write(dir.path().join(format!("{unit}.cc")), src).unwrap();
             let obj = format!("{unit}.o");
             let src = format!("{unit}.cc");
-            let flags = [
-                "-std=c++98",
-                "-pedantic-errors",
-                "-Wall",
-                "-Wextra",
-                "-Werror",
-                "-fPIC",
-                "-I.",
-                "-c",
-                "-o",
-                &obj,
-                &src,
-            ];
+            let flags = ["-std=c++98", "-pedantic-errors", "-Wall", "-Wextra", "-Werror", "-fPIC", "-I.", "-c", "-o", &obj, &src];
             gxx(dir.path(), &flags).unwrap_or_else(|e| panic!("{name}: {e}"));
         }
-        gxx(dir.path(), &["-shared", "-o", "libtwo.so", "a.o", "b.o"])
-            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        gxx(dir.path(), &["-shared", "-o", "libtwo.so", "a.o", "b.o"]).unwrap_or_else(|e| panic!("{name}: {e}"));
     }
 }
 
@@ -175,31 +131,19 @@ fn class_source(cfg: &StubCfg) -> String {
     for sv in &cfg.subjects {
         if let Some(f) = &sv.func1 {
             if done.insert(("c", f)) {
-                writeln!(
-                    s,
-                    "OStatus {obj}::{f}(const OControlEvent&) {{ return oSUCCESS; }}"
-                )
-                .unwrap();
+                writeln!(s, "OStatus {obj}::{f}(const OControlEvent&) {{ return oSUCCESS; }}").unwrap();
             }
         }
         if let Some(f) = &sv.func2 {
             if done.insert(("r", f)) {
-                writeln!(
-                    s,
-                    "void {obj}::{f}(const OReadyEvent& e) {{ (void)e.SbjIndex(); }}"
-                )
-                .unwrap();
+                writeln!(s, "void {obj}::{f}(const OReadyEvent& e) {{ (void)e.SbjIndex(); }}").unwrap();
             }
         }
     }
     for o in &cfg.observers {
         if let Some(f) = &o.func1 {
             if done.insert(("C", f)) {
-                writeln!(
-                    s,
-                    "OStatus {obj}::{f}(const OConnectEvent&) {{ return oSUCCESS; }}"
-                )
-                .unwrap();
+                writeln!(s, "OStatus {obj}::{f}(const OConnectEvent&) {{ return oSUCCESS; }}").unwrap();
             }
         }
         if let Some(f) = &o.func2 {
@@ -209,11 +153,7 @@ fn class_source(cfg: &StubCfg) -> String {
         }
     }
     for x in &cfg.extras {
-        writeln!(
-            s,
-            "void {obj}::{x}(void*) {{ Selector next = Extra_Entry[entry{x}]; (void)next; }}"
-        )
-        .unwrap();
+        writeln!(s, "void {obj}::{x}(void*) {{ Selector next = Extra_Entry[entry{x}]; (void)next; }}").unwrap();
     }
     s
 }
@@ -235,10 +175,7 @@ fn sdk_flags(inc: &Path, tmp: &Path) -> Vec<String> {
 fn generated_stub_compiles_against_sdk_headers() {
     let inc = include_dir();
     if !inc.join("OPENR/stub_macro.h").is_file() {
-        eprintln!(
-            "note: {} does not exist yet; skipping the g++ check of the generated stubs",
-            inc.join("OPENR/stub_macro.h").display()
-        );
+        eprintln!("note: {} does not exist yet; skipping the g++ check of the generated stubs", inc.join("OPENR/stub_macro.h").display());
         return;
     }
     let mut failures = Vec::new();
@@ -246,11 +183,7 @@ fn generated_stub_compiles_against_sdk_headers() {
         let cfg = fixture(name);
         let dir = tempfile::tempdir().unwrap();
         write_generated(&cfg, dir.path());
-        std::fs::write(
-            dir.path().join(format!("{}.h", cfg.object_name)),
-            class_header(&cfg),
-        )
-        .unwrap();
+        std::fs::write(dir.path().join(format!("{}.h", cfg.object_name)), class_header(&cfg)).unwrap();
         let mut args = sdk_flags(&inc, dir.path());
         args.push("-fsyntax-only".into());
         args.push(format!("{}Stub.cc", cfg.object_name));
@@ -267,10 +200,7 @@ fn stub_and_user_code_link_into_one_module() {
     let inc = include_dir();
     for h in ["OPENR/stub_macro.h", "OPENR/core_macro.h"] {
         if !inc.join(h).is_file() {
-            eprintln!(
-                "note: {} does not exist yet; skipping the stub + user code link check",
-                inc.join(h).display()
-            );
+            eprintln!("note: {} does not exist yet; skipping the stub + user code link check", inc.join(h).display());
             return;
         }
     }
@@ -285,12 +215,7 @@ fn stub_and_user_code_link_into_one_module() {
         let result = (|| {
             for unit in [format!("{obj}Stub"), obj.clone()] {
                 let mut args = sdk_flags(&inc, dir.path());
-                args.extend([
-                    "-c".into(),
-                    "-o".into(),
-                    format!("{unit}.o"),
-                    format!("{unit}.cc"),
-                ]);
+                args.extend(["-c".into(), "-o".into(), format!("{unit}.o"), format!("{unit}.cc")]);
                 let args: Vec<&str> = args.iter().map(String::as_str).collect();
                 gxx(dir.path(), &args)?;
             }

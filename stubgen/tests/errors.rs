@@ -3,9 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-use stubgen::{
-    generate, parse_files, parse_str, write_outputs, ErrorKind, Service, ServiceKind, StubCfg,
-};
+use stubgen::{generate, parse_files, parse_str, write_outputs, ErrorKind, Service, ServiceKind, StubCfg};
 
 const MIN: &str = "ObjectName : Obj
 NumOfOSubject : 1
@@ -21,11 +19,7 @@ fn missing_file() {
     assert_eq!(e.kind(), ErrorKind::Read);
     assert_eq!(e.file(), Some(p.as_path()));
     assert_eq!(e.line(), None);
-    assert!(
-        e.to_string()
-            .starts_with("/nonexistent/dir/stub.cfg: cannot read: No such file or directory"),
-        "{e}"
-    );
+    assert!(e.to_string().starts_with("/nonexistent/dir/stub.cfg: cannot read: No such file or directory"), "{e}");
     assert!(std::error::Error::source(&e).is_some());
 }
 
@@ -34,11 +28,7 @@ fn directory_instead_of_file() {
     let dir = tempfile::tempdir().unwrap();
     let e = parse_files(&[dir.path().to_path_buf()]).unwrap_err();
     assert_eq!(e.kind(), ErrorKind::Read);
-    assert!(
-        e.to_string()
-            .starts_with(&format!("{}: cannot read: ", dir.path().display())),
-        "{e}"
-    );
+    assert!(e.to_string().starts_with(&format!("{}: cannot read: ", dir.path().display())), "{e}");
 }
 
 #[test]
@@ -63,10 +53,7 @@ fn empty_and_blank_texts() {
     for text in ["", "\n", " \t\r\n\r\n"] {
         let e = parse_str("stub.cfg", text).unwrap_err();
         assert_eq!(e.kind(), ErrorKind::EmptyFile);
-        assert!(
-            e.to_string().starts_with("stub.cfg:1: empty stub.cfg"),
-            "{e}"
-        );
+        assert!(e.to_string().starts_with("stub.cfg:1: empty stub.cfg"), "{e}");
     }
 }
 
@@ -78,19 +65,13 @@ fn an_empty_file_among_several_is_an_error() {
     std::fs::write(&a, MIN).unwrap();
     std::fs::write(&b, "").unwrap();
     let e = parse_files(&[a, b.clone()]).unwrap_err();
-    assert_eq!(
-        (e.kind(), e.file(), e.line()),
-        (ErrorKind::EmptyFile, Some(b.as_path()), Some(1))
-    );
+    assert_eq!((e.kind(), e.file(), e.line()), (ErrorKind::EmptyFile, Some(b.as_path()), Some(1)));
 }
 
 #[test]
 fn comment_only_file_has_no_object_name_and_no_counts() {
     let e = parse_str("c.cfg", "// nothing\n// here\n").unwrap_err();
-    assert_eq!(
-        e.to_string(),
-        "c.cfg:2: At least one Subject-Service should be specified. (no NumOfOSubject line)"
-    );
+    assert_eq!(e.to_string(), "c.cfg:2: At least one Subject-Service should be specified. (no NumOfOSubject line)");
 }
 
 #[test]
@@ -98,10 +79,7 @@ fn missing_object_name_points_at_the_last_line() {
     let text = MIN.replace("ObjectName : Obj\n", "") + "\n// trailing\n";
     let e = parse_str("s.cfg", &text).unwrap_err();
     assert_eq!(e.kind(), ErrorKind::NoObjectName);
-    assert_eq!(
-        e.to_string(),
-        "s.cfg:6: no ObjectName line: expected 'ObjectName : <ClassName>'"
-    );
+    assert_eq!(e.to_string(), "s.cfg:6: no ObjectName line: expected 'ObjectName : <ClassName>'");
 }
 
 #[test]
@@ -113,40 +91,20 @@ fn sony_errors_come_before_our_object_name_check() {
 
 #[test]
 fn object_name_keyword_is_rejected() {
-    let e = parse_str(
-        "s.cfg",
-        &MIN.replace("ObjectName : Obj", "ObjectName : class"),
-    )
-    .unwrap_err();
+    let e = parse_str("s.cfg", &MIN.replace("ObjectName : Obj", "ObjectName : class")).unwrap_err();
     assert_eq!(e.kind(), ErrorKind::InvalidObjectName);
 }
 
 #[test]
 fn extra_numbered_stub_names_are_reserved() {
-    for name in [
-        "Control0",
-        "Ready1",
-        "Connect2",
-        "Notify3",
-        "hookstub0",
-        "notifystub9",
-        "Destroy",
-    ] {
+    for name in ["Control0", "Ready1", "Connect2", "Notify3", "hookstub0", "notifystub9", "Destroy"] {
         let e = parse_str("s.cfg", &format!("{MIN}Extra : {name}()\n")).unwrap_err();
-        assert_eq!(
-            (e.kind(), e.line()),
-            (ErrorKind::InvalidExtraName, Some(6)),
-            "{name}"
-        );
+        assert_eq!((e.kind(), e.line()), (ErrorKind::InvalidExtraName, Some(6)), "{name}");
     }
 }
 
 fn service(kind: ServiceKind, sub: &str) -> Service {
-    let letter = if kind == ServiceKind::Subject {
-        'S'
-    } else {
-        'O'
-    };
+    let letter = if kind == ServiceKind::Subject { 'S' } else { 'O' };
     Service {
         name: format!("Obj.{sub}.char.{letter}"),
         sub_name: sub.to_owned(),
@@ -187,55 +145,22 @@ fn generate_revalidates_hand_built_configs() {
         assert_eq!(e.kind(), kind, "{e}");
     };
     check(&|c| c.object_name.clear(), ErrorKind::NoObjectName);
-    check(
-        &|c| c.object_name = "a b".into(),
-        ErrorKind::InvalidObjectName,
-    );
+    check(&|c| c.object_name = "a b".into(), ErrorKind::InvalidObjectName);
     check(&|c| c.subjects.clear(), ErrorKind::NoSubject);
     check(&|c| c.observers.clear(), ErrorKind::NoObserver);
-    check(
-        &|c| c.subjects[0].sub_name = "a.b".into(),
-        ErrorKind::InvalidSubName,
-    );
-    check(
-        &|c| c.subjects[0].sub_name.clear(),
-        ErrorKind::InvalidSubName,
-    );
-    check(
-        &|c| c.subjects[0].name = "with \"quote\"".into(),
-        ErrorKind::InvalidServiceName,
-    );
-    check(
-        &|c| c.subjects[0].name = "tab\there".into(),
-        ErrorKind::InvalidServiceName,
-    );
-    check(
-        &|c| c.observers[0].func2 = Some("Notify()".into()),
-        ErrorKind::InvalidFunctionName,
-    );
-    check(
-        &|c| c.extras = vec!["a-b".into()],
-        ErrorKind::InvalidExtraName,
-    );
-    check(
-        &|c| c.extras = vec!["Init".into()],
-        ErrorKind::InvalidExtraName,
-    );
-    check(
-        &|c| c.extras = vec!["A".into(), "A".into()],
-        ErrorKind::DuplicateExtra,
-    );
-    check(
-        &|c| c.extras = vec!["A".into(), "Astub".into()],
-        ErrorKind::DuplicateExtra,
-    );
+    check(&|c| c.subjects[0].sub_name = "a.b".into(), ErrorKind::InvalidSubName);
+    check(&|c| c.subjects[0].sub_name.clear(), ErrorKind::InvalidSubName);
+    check(&|c| c.subjects[0].name = "with \"quote\"".into(), ErrorKind::InvalidServiceName);
+    check(&|c| c.subjects[0].name = "tab\there".into(), ErrorKind::InvalidServiceName);
+    check(&|c| c.observers[0].func2 = Some("Notify()".into()), ErrorKind::InvalidFunctionName);
+    check(&|c| c.extras = vec!["a-b".into()], ErrorKind::InvalidExtraName);
+    check(&|c| c.extras = vec!["Init".into()], ErrorKind::InvalidExtraName);
+    check(&|c| c.extras = vec!["A".into(), "A".into()], ErrorKind::DuplicateExtra);
+    check(&|c| c.extras = vec!["A".into(), "Astub".into()], ErrorKind::DuplicateExtra);
 
     let mut cfg = built();
     cfg.subjects[0].sub_name = "x y".into();
-    assert!(generate(&cfg)
-        .unwrap_err()
-        .to_string()
-        .starts_with("built.cfg:7: SubName 'x y'"));
+    assert!(generate(&cfg).unwrap_err().to_string().starts_with("built.cfg:7: SubName 'x y'"));
 }
 
 #[test]
@@ -278,29 +203,17 @@ fn write_outputs_writes_the_four_files() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("entry.h"), "old contents").unwrap();
     let written = write_outputs(&built(), dir.path()).unwrap();
-    let expected: Vec<PathBuf> = ["def.h", "entry.h", "ObjStub.h", "ObjStub.cc"]
-        .iter()
-        .map(|n| dir.path().join(n))
-        .collect();
+    let expected: Vec<PathBuf> = ["def.h", "entry.h", "ObjStub.h", "ObjStub.cc"].iter().map(|n| dir.path().join(n)).collect();
     assert_eq!(written, expected);
-    assert_eq!(
-        names_in(dir.path()),
-        ["ObjStub.cc", "ObjStub.h", "def.h", "entry.h"]
-    );
+    assert_eq!(names_in(dir.path()), ["ObjStub.cc", "ObjStub.h", "def.h", "entry.h"]);
     let gen = generate(&built()).unwrap();
     for (name, text) in gen {
-        assert_eq!(
-            std::fs::read_to_string(dir.path().join(name)).unwrap(),
-            text
-        );
+        assert_eq!(std::fs::read_to_string(dir.path().join(name)).unwrap(), text);
     }
 }
 
 fn names_in(dir: &Path) -> Vec<String> {
-    let mut v: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
+    let mut v: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     v.sort();
     v
 }

@@ -6,30 +6,13 @@ use common::*;
 #[test]
 fn objectcomm_sample_subject() {
     let (cfg, f) = generate_fixture("objectcomm-subject.cfg");
-    assert_eq!(
-        (cfg.subjects.len(), cfg.observers.len(), cfg.extras.len()),
-        (1, 1, 0)
-    );
+    assert_eq!((cfg.subjects.len(), cfg.observers.len(), cfg.extras.len()), (1, 1, 0));
     let def = &f["def.h"];
     assert!(def.contains("const char* const objectName = \"SampleSubject\";"));
     assert!(def.contains("const int sbjSendString = 0;"));
     assert!(def.contains("const int obsDummyObserver = 0;"));
-    assert!(has_lines(
-        def,
-        &[
-            "const char* const subjectService[numOfSubject] = {",
-            "\"SampleSubject.SendString.char.S\"",
-            "};",
-        ]
-    ));
-    assert!(has_lines(
-        def,
-        &[
-            "const char* const observerService[numOfObserver] = {",
-            "\"SampleSubject.DummyObserver.DoNotConnect.O\"",
-            "};",
-        ]
-    ));
+    assert!(has_lines(def, &["const char* const subjectService[numOfSubject] = {", "\"SampleSubject.SendString.char.S\"", "};",]));
+    assert!(has_lines(def, &["const char* const observerService[numOfObserver] = {", "\"SampleSubject.DummyObserver.DoNotConnect.O\"", "};",]));
     let entry = &f["entry.h"];
     assert!(entry.contains("const int numOfHook = 4;"));
     assert!(entry.contains("const ::Selector Entry_Hook[numOfHook] = { 0, 1, 2, 3 };"));
@@ -42,12 +25,7 @@ fn objectcomm_sample_subject() {
     let cc = &f["SampleSubjectStub.cc"];
     assert!(has_lines(
         cc,
-        &[
-            "StubFuncDefine_Control_nofunc(0)",
-            "StubFuncDefine_Ready(0, Ready)",
-            "StubFuncDefine_Connect_nofunc(0)",
-            "StubFuncDefine_Notify_nofunc(0)",
-        ]
+        &["StubFuncDefine_Control_nofunc(0)", "StubFuncDefine_Ready(0, Ready)", "StubFuncDefine_Connect_nofunc(0)", "StubFuncDefine_Notify_nofunc(0)",]
     ));
     assert_eq!(gnuc_table(cc), expected_table(1, 1, &[]));
     assert!(f.contains_key("SampleSubjectStub.h"));
@@ -62,12 +40,7 @@ fn objectcomm_sample_observer() {
     let cc = &f["SampleObserverStub.cc"];
     assert!(has_lines(
         cc,
-        &[
-            "StubFuncDefine_Control_nofunc(0)",
-            "StubFuncDefine_Ready_nofunc(0)",
-            "StubFuncDefine_Connect_nofunc(0)",
-            "StubFuncDefine_Notify(0, Notify)",
-        ]
+        &["StubFuncDefine_Control_nofunc(0)", "StubFuncDefine_Ready_nofunc(0)", "StubFuncDefine_Connect_nofunc(0)", "StubFuncDefine_Notify(0, Notify)",]
     ));
     assert_eq!(gnuc_table(cc), expected_table(1, 1, &[]));
 }
@@ -81,8 +54,7 @@ fn moving_legs7() {
     let cc = &f["MovingLegs7Stub.cc"];
     assert!(cc.contains("StubFuncDefine_Ready(0, Ready)"));
     assert_eq!(cc.matches("_nofunc(").count(), 3);
-    assert!(cc.contains("#include \"MovingLegs7.h\"\n#ifdef Self\n#undef Self")
-        && cc.contains("#endif\n::MovingLegs7 Self;"));
+    assert!(cc.contains("#include \"MovingLegs7.h\"\n#ifdef Self\n#undef Self") && cc.contains("#endif\n::MovingLegs7 Self;"));
 }
 
 #[test]
@@ -131,10 +103,7 @@ fn tiny_ftpd_nine_extras_in_file_order() {
     assert!(entry.contains("const int entryListenContforPI = 0;"));
     assert!(entry.contains("const int entryCloseContforDTP = 8;"));
     let extras: Vec<&str> = cfg.extras.iter().map(String::as_str).collect();
-    assert_eq!(
-        gnuc_table(&f["TinyFTPDStub.cc"]),
-        expected_table(1, 1, &extras)
-    );
+    assert_eq!(gnuc_table(&f["TinyFTPDStub.cc"]), expected_table(1, 1, &extras));
 }
 
 #[test]
@@ -142,10 +111,7 @@ fn monet_interleaved_three_subjects_two_observers() {
     let (cfg, f) = generate_fixture("monet.cfg");
     let subs: Vec<&str> = cfg.subjects.iter().map(|s| s.sub_name.as_str()).collect();
     let obs: Vec<&str> = cfg.observers.iter().map(|s| s.sub_name.as_str()).collect();
-    assert_eq!(
-        subs,
-        ["ClientResult", "MotionAgentCommand", "SoundAgentCommand"]
-    );
+    assert_eq!(subs, ["ClientResult", "MotionAgentCommand", "SoundAgentCommand"]);
     assert_eq!(obs, ["ClientCommand", "AgentResult"]);
     let def = &f["def.h"];
     for l in [
@@ -173,13 +139,7 @@ fn monet_interleaved_three_subjects_two_observers() {
 fn ball_tracking_head7_two_subjects_three_observers() {
     let (_, f) = generate_fixture("balltrackinghead7.cfg");
     let def = &f["def.h"];
-    for l in [
-        "const int sbjCommand = 0;",
-        "const int sbjJoint = 1;",
-        "const int obsResult = 0;",
-        "const int obsSensor = 1;",
-        "const int obsImage = 2;",
-    ] {
+    for l in ["const int sbjCommand = 0;", "const int sbjJoint = 1;", "const int obsResult = 0;", "const int obsSensor = 1;", "const int obsImage = 2;"] {
         assert!(def.contains(l), "{l}");
     }
     let entry = &f["entry.h"];
@@ -261,17 +221,15 @@ fn stub_cc_structure() {
     );
     assert!(has_lines(
         cc,
-        &["#include \"SampleSubject.h\"", "#ifdef Self", "#undef Self // a macro of the program's header must not rename the instance below", "#endif", "::SampleSubject Self;"]
-    ));
-    assert!(has_lines(
-        cc,
         &[
-            "StubFuncDefine_Basic(Init)",
-            "StubFuncDefine_Basic(Start)",
-            "StubFuncDefine_Basic(Stop)",
-            "StubFuncDefine_Basic(Destroy)",
+            "#include \"SampleSubject.h\"",
+            "#ifdef Self",
+            "#undef Self // a macro of the program's header must not rename the instance below",
+            "#endif",
+            "::SampleSubject Self;"
         ]
     ));
+    assert!(has_lines(cc, &["StubFuncDefine_Basic(Init)", "StubFuncDefine_Basic(Start)", "StubFuncDefine_Basic(Stop)", "StubFuncDefine_Basic(Destroy)",]));
     assert!(
         has_lines(
             cc,
@@ -296,15 +254,7 @@ fn stub_cc_structure() {
     );
     // PrologueEntry is not a table row; the table ends with the sentinel, then #else.
     assert!(!gnuc_table(cc).iter().any(|(_, e)| e.contains("Prologue")));
-    assert!(has_lines(
-        cc,
-        &[
-            "{::UNDEF, ENTRY_UNDEF}",
-            "};",
-            "",
-            "#else // !__GNUC__: entry points are the C functions themselves"
-        ]
-    ));
+    assert!(has_lines(cc, &["{::UNDEF, ENTRY_UNDEF}", "};", "", "#else // !__GNUC__: entry points are the C functions themselves"]));
     assert!(cc.trim_end().ends_with("#endif // __GNUC__"));
     assert_eq!(cc.matches("ObjectEntry ObjectEntryTable[]").count(), 2);
 }
@@ -313,23 +263,11 @@ fn stub_cc_structure() {
 fn headers_have_guards_and_entry_h_includes() {
     let (_, f) = generate_fixture("echoserver.cfg");
     let def = &f["def.h"];
-    assert!(has_lines(
-        def,
-        &["#ifndef _def_h_DEFINED", "#define _def_h_DEFINED"]
-    ));
+    assert!(has_lines(def, &["#ifndef _def_h_DEFINED", "#define _def_h_DEFINED"]));
     assert!(!def.contains("#include"));
     assert!(def.trim_end().ends_with("#endif // _def_h_DEFINED"));
     let entry = &f["entry.h"];
-    assert!(has_lines(
-        entry,
-        &[
-            "#ifndef _entry_h_DEFINED",
-            "#define _entry_h_DEFINED",
-            "",
-            "#include <Types.h>",
-            "#include \"def.h\""
-        ]
-    ));
+    assert!(has_lines(entry, &["#ifndef _entry_h_DEFINED", "#define _entry_h_DEFINED", "", "#include <Types.h>", "#include \"def.h\""]));
     assert!(entry.trim_end().ends_with("#endif // _entry_h_DEFINED"));
 }
 
@@ -365,15 +303,9 @@ fn all_function_kinds_aliases_and_blanks() {
 #[test]
 fn crlf_fixture() {
     let bytes = std::fs::read(good("battchecker-crlf.cfg")).unwrap();
-    assert!(
-        bytes.windows(2).any(|w| w == b"\r\n"),
-        "fixture lost its CRLF line ends"
-    );
+    assert!(bytes.windows(2).any(|w| w == b"\r\n"), "fixture lost its CRLF line ends");
     let (cfg, f) = generate_fixture("battchecker-crlf.cfg");
     assert_eq!(cfg.object_name, "BattChecker");
-    assert_eq!(
-        cfg.subjects[0].name,
-        "BattChecker.DummySubject.DoNotConnect.S"
-    );
+    assert_eq!(cfg.subjects[0].name, "BattChecker.DummySubject.DoNotConnect.S");
     assert!(f.values().all(|t| !t.contains('\r')));
 }

@@ -60,13 +60,8 @@ fn bad_fixtures_fail_with_the_expected_message() {
             // Only the empty fixtures cannot carry an expectation.
             None => (1, "empty stub.cfg".to_owned()),
         };
-        let display_ok =
-            err.to_string() == format!("{}:{}: {}", path.display(), line, err.message());
-        if err.file() != Some(path.as_path())
-            || err.line() != Some(line)
-            || !err.message().starts_with(&msg)
-            || !display_ok
-        {
+        let display_ok = err.to_string() == format!("{}:{}: {}", path.display(), line, err.message());
+        if err.file() != Some(path.as_path()) || err.line() != Some(line) || !err.message().starts_with(&msg) || !display_ok {
             failures.push(format!("{err}\n    expected line {line}: {msg}"));
         }
     }

@@ -16,10 +16,7 @@ fn minimal() {
     let cfg = parse_str("stub.cfg", MIN).unwrap();
     assert_eq!(cfg.object_name, "Obj");
     let s = &cfg.subjects[0];
-    assert_eq!(
-        (s.name.as_str(), s.sub_name.as_str(), s.data_name.as_str()),
-        ("Obj.Sub.char.S", "Sub", "char")
-    );
+    assert_eq!((s.name.as_str(), s.sub_name.as_str(), s.data_name.as_str()), ("Obj.Sub.char.S", "Sub", "char"));
     assert_eq!((s.func1.as_deref(), s.func2.as_deref()), (None, None));
     assert_eq!(s.kind, ServiceKind::Subject);
     assert_eq!((s.line, s.file.clone()), (4, PathBuf::from("stub.cfg")));
@@ -76,9 +73,7 @@ fn object_name_takes_the_first_token() {
 
 #[test]
 fn keyword_aliases() {
-    let text = MIN
-        .replace("NumOfOSubject", "NumOfSubject")
-        .replace("NumOfOObserver", "NumOfObserver");
+    let text = MIN.replace("NumOfOSubject", "NumOfSubject").replace("NumOfOObserver", "NumOfObserver");
     let cfg = parse_str("a", &text).unwrap();
     assert_eq!((cfg.subjects.len(), cfg.observers.len()), (1, 1));
     // Mixed: the alias and the full keyword set the same value; the last one wins.
@@ -88,9 +83,7 @@ fn keyword_aliases() {
 
 #[test]
 fn last_value_wins_for_scalars() {
-    let text = format!(
-        "ObjectName : First\nNumOfOSubject : 9\nNumOfObserver : 0\n{MIN}ObjectName : Last\n"
-    );
+    let text = format!("ObjectName : First\nNumOfOSubject : 9\nNumOfObserver : 0\n{MIN}ObjectName : Last\n");
     let cfg = parse_str("a", &text).unwrap();
     assert_eq!(cfg.object_name, "Last");
     let text = format!("{MIN}NumOfOObserver : 2\nService : \"Obj.Obs2.char.O\", null, null\n");
@@ -99,8 +92,7 @@ fn last_value_wins_for_scalars() {
 
 #[test]
 fn counts_may_come_in_any_order_and_after_services() {
-    let text =
-        "Service : \"Obj.Obs.char.O\", null, null\nService : \"Obj.Sub.char.S\", null, null\n\
+    let text = "Service : \"Obj.Obs.char.O\", null, null\nService : \"Obj.Sub.char.S\", null, null\n\
                 NumOfOObserver : 1\nObjectName : Obj\nNumOfOSubject : 1 trailing words\n";
     assert!(parse_str("a", text).is_ok());
 }
@@ -114,16 +106,8 @@ fn interleaved_services_are_numbered_per_kind() {
         Service : \"Obj.O3.c.O\", null, null\n\
         Service : \"Obj.S2.c.S\", null, null\n";
     let cfg = parse_str("a", text).unwrap();
-    let s: Vec<_> = cfg
-        .subjects
-        .iter()
-        .map(|s| (s.sub_name.as_str(), s.line))
-        .collect();
-    let o: Vec<_> = cfg
-        .observers
-        .iter()
-        .map(|s| (s.sub_name.as_str(), s.line))
-        .collect();
+    let s: Vec<_> = cfg.subjects.iter().map(|s| (s.sub_name.as_str(), s.line)).collect();
+    let o: Vec<_> = cfg.observers.iter().map(|s| (s.sub_name.as_str(), s.line)).collect();
     assert_eq!(s, [("S1", 5), ("S2", 8)]);
     assert_eq!(o, [("O1", 4), ("O2", 6), ("O3", 7)]);
     let def = &stubgen::generate(&cfg).unwrap()[0].1;
@@ -145,10 +129,7 @@ fn service_name_details() {
     // fragment of "sbj<SubName>"); DataName may hold anything printable.
     let text = MIN
         .replace("Obj.Sub.char.S", "Other.3D.unsigned char [4].S")
-        .replace(
-            "\"Obj.Obs.char.O\", null, null",
-            "\"Obj.Obs.char.O\", null, null, extra, fields",
-        );
+        .replace("\"Obj.Obs.char.O\", null, null", "\"Obj.Obs.char.O\", null, null, extra, fields");
     let cfg = parse_str("a", &text).unwrap();
     assert_eq!(cfg.subjects[0].name, "Other.3D.unsigned char [4].S");
     assert_eq!(cfg.subjects[0].sub_name, "3D");
@@ -183,17 +164,12 @@ fn dropped_service_leads_to_count_mismatch() {
     let e = parse_str("x.cfg", &text).unwrap_err();
     assert_eq!(e.kind(), ErrorKind::SubjectCountMismatch);
     assert_eq!(e.line(), Some(2));
-    assert!(e
-        .to_string()
-        .starts_with("x.cfg:2: Inconsitency found between service and numOfOSubject."));
+    assert!(e.to_string().starts_with("x.cfg:2: Inconsitency found between service and numOfOSubject."));
 }
 
 #[test]
 fn function_fields() {
-    let text = MIN.replace(
-        "\"Obj.Sub.char.S\", null, null",
-        "\"Obj.Sub.char.S\", Ctl  (), Rdy()   ",
-    );
+    let text = MIN.replace("\"Obj.Sub.char.S\", null, null", "\"Obj.Sub.char.S\", Ctl  (), Rdy()   ");
     let cfg = parse_str("a", &text).unwrap();
     assert_eq!(cfg.subjects[0].func1.as_deref(), Some("Ctl"));
     assert_eq!(cfg.subjects[0].func2.as_deref(), Some("Rdy"));
@@ -221,49 +197,22 @@ fn multiple_files_are_concatenated() {
     let dir = tempfile::tempdir().unwrap();
     let a = dir.path().join("a.cfg");
     let b = dir.path().join("b.cfg");
-    std::fs::write(
-        &a,
-        "ObjectName : Obj\nNumOfOSubject : 2\nService : \"Obj.S1.c.S\", null, null\n",
-    )
-    .unwrap();
-    std::fs::write(
-        &b,
-        "// second file\nNumOfOObserver : 1\nService : \"Obj.O1.c.O\", null, null\nService : \"Obj.S2.c.S\", null, Ready()\nExtra : X()\n",
-    )
-    .unwrap();
+    std::fs::write(&a, "ObjectName : Obj\nNumOfOSubject : 2\nService : \"Obj.S1.c.S\", null, null\n").unwrap();
+    std::fs::write(&b, "// second file\nNumOfOObserver : 1\nService : \"Obj.O1.c.O\", null, null\nService : \"Obj.S2.c.S\", null, Ready()\nExtra : X()\n")
+        .unwrap();
     let cfg = parse_files(&[a.clone(), b.clone()]).unwrap();
     assert_eq!(cfg.subjects.len(), 2);
-    assert_eq!(
-        (cfg.subjects[0].file.clone(), cfg.subjects[0].line),
-        (a.clone(), 3)
-    );
-    assert_eq!(
-        (cfg.subjects[1].file.clone(), cfg.subjects[1].line),
-        (b.clone(), 4)
-    );
+    assert_eq!((cfg.subjects[0].file.clone(), cfg.subjects[0].line), (a.clone(), 3));
+    assert_eq!((cfg.subjects[1].file.clone(), cfg.subjects[1].line), (b.clone(), 4));
     assert_eq!(cfg.extras, ["X"]);
 
     // Errors name the file and line in that file; "absent" counts point at the last line
     // of the last file.
-    std::fs::write(
-        &b,
-        "Service : \"Obj.O1.c.O\", null, null\nService : \"Obj.S2.c.S\", null, null\n// end\n",
-    )
-    .unwrap();
+    std::fs::write(&b, "Service : \"Obj.O1.c.O\", null, null\nService : \"Obj.S2.c.S\", null, null\n// end\n").unwrap();
     let e = parse_files(&[a.clone(), b.clone()]).unwrap_err();
     assert_eq!(e.kind(), ErrorKind::NoObserver);
-    assert_eq!(
-        e.to_string(),
-        format!(
-            "{}:3: At least one Observer-Service should be specified. (no NumOfOObserver line)",
-            b.display()
-        )
-    );
-    std::fs::write(
-        &b,
-        "NumOfOObserver : 1\nService : \"Obj.O1.c.O\", null, Bad\n",
-    )
-    .unwrap();
+    assert_eq!(e.to_string(), format!("{}:3: At least one Observer-Service should be specified. (no NumOfOObserver line)", b.display()));
+    std::fs::write(&b, "NumOfOObserver : 1\nService : \"Obj.O1.c.O\", null, Bad\n").unwrap();
     let e = parse_files(&[a, b.clone()]).unwrap_err();
     assert_eq!((e.file(), e.line()), (Some(b.as_path()), Some(2)));
 }
@@ -312,22 +261,12 @@ fn counts_are_read_like_atoi() {
         let text = MIN.replace("NumOfOSubject : 1", &format!("NumOfOSubject : {v}"));
         let e = parse_str("a", &text).unwrap_err();
         assert_eq!(e.kind(), ErrorKind::NoSubject, "{v}");
-        assert!(
-            e.message()
-                .ends_with(&format!("(NumOfOSubject value '{v}' is not a number)")),
-            "{e}"
-        );
+        assert!(e.message().ends_with(&format!("(NumOfOSubject value '{v}' is not a number)")), "{e}");
     }
 }
 
 #[test]
 fn huge_count_is_a_mismatch_not_a_crash() {
-    let text = MIN.replace(
-        "NumOfOSubject : 1",
-        "NumOfOSubject : 99999999999999999999999999",
-    );
-    assert_eq!(
-        parse_str("a", &text).unwrap_err().kind(),
-        ErrorKind::SubjectCountMismatch
-    );
+    let text = MIN.replace("NumOfOSubject : 1", "NumOfOSubject : 99999999999999999999999999");
+    assert_eq!(parse_str("a", &text).unwrap_err().kind(), ErrorKind::SubjectCountMismatch);
 }

@@ -58,7 +58,11 @@ pub mod new {
         about: "one object that prints a greeting on start",
         objects: &["main"],
         files: &[
-            COMMON[0], COMMON[1], COMMON[2], COMMON[3], COMMON[4],
+            COMMON[0],
+            COMMON[1],
+            COMMON[2],
+            COMMON[3],
+            COMMON[4],
             file!("{{obj.class}}/stub.cfg", "hello/stub.cfg.hbs"),
             file!("{{obj.class}}/{{obj.class}}.h", "hello/object.h.hbs"),
             file!("{{obj.class}}/{{obj.class}}.cc", "hello/object.cc.hbs"),
@@ -72,7 +76,11 @@ pub mod new {
         about: "two objects: a subject sending strings to an observer (CONNECT.CFG)",
         objects: &["subject", "observer"],
         files: &[
-            COMMON[0], COMMON[1], COMMON[2], COMMON[3], COMMON[4],
+            COMMON[0],
+            COMMON[1],
+            COMMON[2],
+            COMMON[3],
+            COMMON[4],
             file!("{{subject.class}}/stub.cfg", "subject-observer/subject.stub.cfg.hbs"),
             file!("{{subject.class}}/{{subject.class}}.h", "subject-observer/subject.h.hbs"),
             file!("{{subject.class}}/{{subject.class}}.cc", "subject-observer/subject.cc.hbs"),
@@ -89,7 +97,11 @@ pub mod new {
         about: "one object moving the legs through postures (OVirtualRobotComm.Effector)",
         objects: &["main"],
         files: &[
-            COMMON[0], COMMON[1], COMMON[2], COMMON[3], COMMON[4],
+            COMMON[0],
+            COMMON[1],
+            COMMON[2],
+            COMMON[3],
+            COMMON[4],
             file!("{{obj.class}}/stub.cfg", "walk/stub.cfg.hbs"),
             file!("{{obj.class}}/{{obj.class}}.h", "walk/object.h.hbs"),
             file!("{{obj.class}}/{{obj.class}}.cc", "walk/object.cc.hbs"),
@@ -106,7 +118,8 @@ pub mod new {
         // The C++ observer first: it is the object with a Makefile.
         objects: &["observer", "subject"],
         files: &[
-            COMMON[3], COMMON[4],
+            COMMON[3],
+            COMMON[4],
             file!("{{subject.class}}/Cargo.toml", "rust-object/Cargo.toml.hbs"),
             file!("{{subject.class}}/src/lib.rs", "rust-object/lib.rs.hbs"),
             // The common Makefile and ocf for the observer alone: `obj` is the first object.

@@ -76,7 +76,8 @@ impl Observer for Recorder {
         let writer = std::thread::Builder::new()
             .name("openr-record".into())
             .spawn(move || {
-                let mut w = Writer { dir, index: std::io::BufWriter::new(index), view: Some(std::io::BufWriter::new(view)), pictures: 0, wav: None, samples: 0 };
+                let mut w =
+                    Writer { dir, index: std::io::BufWriter::new(index), view: Some(std::io::BufWriter::new(view)), pictures: 0, wav: None, samples: 0 };
                 for item in rx {
                     if let Err(e) = w.write(item) {
                         eprintln!("warning: --record: {e}");

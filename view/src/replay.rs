@@ -51,7 +51,8 @@ pub fn open(path: &Path) -> Res<Recording> {
     if m["version"].as_u64() != Some(VERSION) {
         return Err(format!("{}: recording version {} (this cargo-openr reads version {VERSION})", manifest_path.display(), m["version"]));
     }
-    let design = m["design"].as_str().and_then(Design::from_name).ok_or_else(|| format!("{}: unknown robot design {}", manifest_path.display(), m["design"]))?;
+    let design =
+        m["design"].as_str().and_then(Design::from_name).ok_or_else(|| format!("{}: unknown robot design {}", manifest_path.display(), m["design"]))?;
     let file = |key: &str, default: &str| path.join(m[key].as_str().unwrap_or(default));
     let (_, records) = read_trace(&file("trace", TRACE), Some(design))?;
     let camera = read_camera_index(path, &file("camera", CAMERA_INDEX))?;
@@ -243,7 +244,13 @@ impl Now {
     }
 
     /// The page's snapshot; the trace's values win over `view`'s where both have one.
-    fn snapshot(&self, design: Design, prims: &[sdk_runtime::robot::model::Primitive], (t, frame, camera_images): (u64, u64, usize), view: Option<&Value>) -> Value {
+    fn snapshot(
+        &self,
+        design: Design,
+        prims: &[sdk_runtime::robot::model::Primitive],
+        (t, frame, camera_images): (u64, u64, usize),
+        view: Option<&Value>,
+    ) -> Value {
         let (mut joints, mut leds, mut ears, mut sensors) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
         for p in prims {
             let loc = p.locator;

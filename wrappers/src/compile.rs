@@ -107,11 +107,8 @@ fn missing(name: &str, tool: &str, where_: &str) -> Error {
         "gcc" => "gcc",
         _ => "binutils",
     };
-    ErrorKind::MissingHostTool {
-        tool: format!("`{tool}` ({where_})"),
-        hint: format!("install it with `apt-get install {pkg}` (or run `cargo openr doctor`)"),
-    }
-    .into()
+    ErrorKind::MissingHostTool { tool: format!("`{tool}` ({where_})"), hint: format!("install it with `apt-get install {pkg}` (or run `cargo openr doctor`)") }
+        .into()
 }
 
 /// Replaces this process with `cmd` (a pass-through tool must behave exactly like the

@@ -71,10 +71,14 @@ impl fmt::Display for Error {
                 for r in references {
                     write!(f, "\n  {r}")?;
                 }
-                write!(f, "\n  hint: no object, archive or library of the link defines {}; define {}, add the object or \
+                write!(
+                    f,
+                    "\n  hint: no object, archive or library of the link defines {}; define {}, add the object or \
                            archive that does (libraries, -lNAME, after the objects that use them), or check the \
                            spelling and parameter types of the declaration",
-                    if references.len() == 1 { "it" } else { "them" }, if references.len() == 1 { "it" } else { "them" })?;
+                    if references.len() == 1 { "it" } else { "them" },
+                    if references.len() == 1 { "it" } else { "them" }
+                )?;
                 indented(f, "the linker said:", log)
             }
             ErrorKind::BadObject { path, message } => write!(f, "{}: {message}", path.display()),

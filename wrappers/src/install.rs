@@ -94,10 +94,7 @@ pub fn install(prefix: &Path, exe: &Path) -> Result<Outcome, Error> {
         return Ok(Outcome::UpToDate);
     }
     if prefix.exists() && !is_sdk_root(prefix) && !is_empty_dir(prefix) {
-        return Err(Error::usage(format!(
-            "{} exists and is not a cargo-openr SDK root; choose a new or empty directory",
-            prefix.display()
-        )));
+        return Err(Error::usage(format!("{} exists and is not a cargo-openr SDK root; choose a new or empty directory", prefix.display())));
     }
     let name = prefix.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "sdk".into());
     let staging = parent.join(format!(".{name}.partial-{}", std::process::id()));
@@ -279,9 +276,7 @@ fn build_archives(root: &Path, include: &Path, src: &Path, map: &str) -> Result<
     }
     // Two compilers at a time: the machines this runs on have few cores.
     let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).min(4);
-    let chunks: Vec<Vec<&(String, PathBuf, PathBuf)>> = (0..workers)
-        .map(|w| jobs.iter().skip(w).step_by(workers).collect())
-        .collect();
+    let chunks: Vec<Vec<&(String, PathBuf, PathBuf)>> = (0..workers).map(|w| jobs.iter().skip(w).step_by(workers).collect()).collect();
     std::thread::scope(|s| {
         let handles: Vec<_> = chunks
             .iter()
@@ -359,13 +354,8 @@ fn build_system_objects(root: &Path, include: &Path, src: &Path, map: &str) -> R
             .map(|e| e.path())
             .find(|p| p.extension().is_some_and(|x| x == "ocf"))
             .ok_or_else(|| Error::usage(format!("{}: no .ocf", source.display())))?;
-        let opts = crate::mkbin::Options {
-            output: Some(build.join("object.bin")),
-            ocf: Some(ocf),
-            default_libs: true,
-            link_args: objects,
-            ..Default::default()
-        };
+        let opts =
+            crate::mkbin::Options { output: Some(build.join("object.bin")), ocf: Some(ocf), default_libs: true, link_args: objects, ..Default::default() };
         let linked = crate::mkbin::link(&opts, root)?;
         fs::rename(&linked, objs_dir.join(bin)).map_err(|e| Error::io(objs_dir.join(bin), e))?;
     }
@@ -384,16 +374,8 @@ fn run_quiet(cmd: &mut Command) -> Result<(), Error> {
     if out.status.success() {
         return Ok(());
     }
-    let line = std::iter::once(cmd.get_program())
-        .chain(cmd.get_args())
-        .map(|a| a.to_string_lossy())
-        .collect::<Vec<_>>()
-        .join(" ");
-    Err(ErrorKind::CommandFailed {
-        command: format!("{line}\n{}", String::from_utf8_lossy(&out.stderr)),
-        status: out.status.to_string(),
-    }
-    .into())
+    let line = std::iter::once(cmd.get_program()).chain(cmd.get_args()).map(|a| a.to_string_lossy()).collect::<Vec<_>>().join(" ");
+    Err(ErrorKind::CommandFailed { command: format!("{line}\n{}", String::from_utf8_lossy(&out.stderr)), status: out.status.to_string() }.into())
 }
 
 /// The base tree `base` (`WCONSOLE/nomemprot`, …; see `cargo openr config`) of `root`

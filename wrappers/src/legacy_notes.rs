@@ -53,9 +53,8 @@ impl Sources<'_> {
         let (Some(_col), Some(line), Some(file)) = (parts.next(), parts.next(), parts.next()) else { return &[] };
         let Ok(line) = line.parse::<usize>() else { return &[] };
         let cwd = self.cwd;
-        let lines = self.files.entry(file.to_string()).or_insert_with(|| {
-            std::fs::read_to_string(cwd.join(file)).ok().map(|t| t.lines().map(str::to_string).collect())
-        });
+        let lines =
+            self.files.entry(file.to_string()).or_insert_with(|| std::fs::read_to_string(cwd.join(file)).ok().map(|t| t.lines().map(str::to_string).collect()));
         match lines {
             Some(lines) if (1..=lines.len()).contains(&line) => &lines[line.saturating_sub(count)..line],
             _ => &[],

@@ -20,10 +20,10 @@ pub mod ldlog;
 mod legacy_notes;
 pub mod mkbin;
 pub mod ocf;
-pub mod sanitize;
 mod repair;
 mod root;
 pub mod rp;
+pub mod sanitize;
 
 use std::ffi::OsString;
 use std::path::Path;

@@ -19,16 +19,36 @@ use crate::ocf::{self, Ocf};
 /// calls (the `/MS` file system), `strtok` (per-object state), `exit` (stops one object)
 /// and the sleeps (virtual time).
 pub const WRAPPED: &[&str] = &[
-    "open", "open64", "creat", "fopen", "fopen64", "freopen", "stat", "lstat", "stat64",
-    "lstat64", "access", "opendir", "readdir", "mkdir", "rmdir", "unlink", "remove", "rename",
-    "truncate", "strtok", "exit", "usleep", "sleep", "nanosleep",
+    "open",
+    "open64",
+    "creat",
+    "fopen",
+    "fopen64",
+    "freopen",
+    "stat",
+    "lstat",
+    "stat64",
+    "lstat64",
+    "access",
+    "opendir",
+    "readdir",
+    "mkdir",
+    "rmdir",
+    "unlink",
+    "remove",
+    "rename",
+    "truncate",
+    "strtok",
+    "exit",
+    "usleep",
+    "sleep",
+    "nanosleep",
 ];
 
 /// Archives every object links, in this order, after the user's arguments. They play the
 /// part of Sony's default libraries plus `-lOPENR -lObjectComm`, which real Makefiles
 /// sometimes forget when they use only the API of one of them.
-pub const DEFAULT_LIBS: &[&str] =
-    &["OPENR", "ObjectComm", "Internet", "antMCOOP", "ERA201D1", "mcoopstub"];
+pub const DEFAULT_LIBS: &[&str] = &["OPENR", "ObjectComm", "Internet", "antMCOOP", "ERA201D1", "mcoopstub"];
 
 /// Symbols the runtime looks up in every object's dynamic symbol table.
 pub const ENTRY_SYMBOLS: &[&str] = &["ObjectEntryTable", "PrologueEntry"];
@@ -60,10 +80,7 @@ pub fn parse_args(args: Vec<OsString>) -> Result<Options, Error> {
         let s = arg.to_string_lossy().into_owned();
         let mut value = |flag: &str| -> Result<PathBuf, Error> {
             match &s[flag.len()..] {
-                "" => it
-                    .next()
-                    .map(PathBuf::from)
-                    .ok_or_else(|| Error::usage(format!("option {flag} needs a value"))),
+                "" => it.next().map(PathBuf::from).ok_or_else(|| Error::usage(format!("option {flag} needs a value"))),
                 rest => Ok(PathBuf::from(rest)),
             }
         };
@@ -117,10 +134,7 @@ pub fn link(opts: &Options, own_root: &Path) -> Result<PathBuf, Error> {
     let base = output.to_string_lossy().strip_suffix(".bin").map(PathBuf::from).unwrap_or_else(|| output.clone());
     let ocf_path = opts.ocf.clone().unwrap_or_else(|| with_ext(&base, ".ocf"));
     if !ocf_path.exists() {
-        return Err(Error::usage(format!(
-            "no object configuration: {} does not exist (give FILE.ocf or -m FILE)",
-            ocf_path.display()
-        )));
+        return Err(Error::usage(format!("no object configuration: {} does not exist (give FILE.ocf or -m FILE)", ocf_path.display())));
     }
     let ocf = ocf::read(&ocf_path)?;
     let root = lib_root(opts, own_root);
@@ -245,11 +259,7 @@ fn run_captured(cmd: &mut Command, root: &Path, verbose: bool) -> Result<(String
 }
 
 fn render(cmd: &Command) -> String {
-    std::iter::once(cmd.get_program())
-        .chain(cmd.get_args())
-        .map(OsStr::to_string_lossy)
-        .collect::<Vec<_>>()
-        .join(" ")
+    std::iter::once(cmd.get_program()).chain(cmd.get_args()).map(OsStr::to_string_lossy).collect::<Vec<_>>().join(" ")
 }
 
 /// The runtime dispatches through `ObjectEntryTable` and checks `PrologueEntry` exists;
@@ -280,15 +290,8 @@ pub fn missing_dynamic_symbols(path: &Path, wanted: &[&str]) -> Result<Vec<Strin
 /// unzipped); `path` names it in errors.
 pub fn missing_dynamic_symbols_in(path: &Path, data: &[u8], wanted: &[&str]) -> Result<Vec<String>, Error> {
     use object::{Object, ObjectSymbol};
-    let file = object::File::parse(data).map_err(|e| ErrorKind::BadObject {
-        path: path.to_path_buf(),
-        message: format!("not an ELF shared object: {e}"),
-    })?;
-    let defined: Vec<String> = file
-        .dynamic_symbols()
-        .filter(|s| s.is_definition())
-        .filter_map(|s| s.name().ok().map(str::to_string))
-        .collect();
+    let file = object::File::parse(data).map_err(|e| ErrorKind::BadObject { path: path.to_path_buf(), message: format!("not an ELF shared object: {e}") })?;
+    let defined: Vec<String> = file.dynamic_symbols().filter(|s| s.is_definition()).filter_map(|s| s.name().ok().map(str::to_string)).collect();
     Ok(wanted.iter().filter(|w| !defined.iter().any(|d| d == *w)).map(|w| w.to_string()).collect())
 }
 
@@ -302,10 +305,7 @@ mod tests {
 
     #[test]
     fn sony_grammar() {
-        let o = parse_args(args(&[
-            "-p", "/sdk", "-o", "x.bin", "XStub.o", "X.o", "libA.a", "x.ocf", "-L/l", "-lObjectComm", "-lOPENR",
-        ]))
-        .unwrap();
+        let o = parse_args(args(&["-p", "/sdk", "-o", "x.bin", "XStub.o", "X.o", "libA.a", "x.ocf", "-L/l", "-lObjectComm", "-lOPENR"])).unwrap();
         assert_eq!(o.prefix, Some("/sdk".into()));
         assert_eq!(o.output, Some("x.bin".into()));
         assert_eq!(o.ocf, Some("x.ocf".into()));
@@ -335,11 +335,8 @@ mod tests {
 
     #[test]
     fn every_wrapped_call_has_a_wrapper() {
-        let src: String = openr_sdk_payload::CXX
-            .iter()
-            .filter(|(p, _)| p.starts_with("mcoopstub/"))
-            .map(|(_, b)| String::from_utf8_lossy(b).into_owned())
-            .collect();
+        let src: String =
+            openr_sdk_payload::CXX.iter().filter(|(p, _)| p.starts_with("mcoopstub/")).map(|(_, b)| String::from_utf8_lossy(b).into_owned()).collect();
         for sym in WRAPPED {
             assert!(src.contains(&format!("__wrap_{sym}(")), "no __wrap_{sym} in cxx/mcoopstub");
         }

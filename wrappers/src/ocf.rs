@@ -24,9 +24,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Ocf, Error> {
         let code = line.split('#').next().unwrap_or("");
         words.extend(code.split_whitespace().map(|w| (i + 1, w)));
     }
-    let err = |line: usize, message: String| -> Error {
-        ErrorKind::Ocf { path: path.to_path_buf(), line, message }.into()
-    };
+    let err = |line: usize, message: String| -> Error { ErrorKind::Ocf { path: path.to_path_buf(), line, message }.into() };
     let Some(&(first_line, first)) = words.first() else {
         return Err(err(1, "empty file: expected `object NAME STACK HEAP PRIO CACHE TLB MODE`".into()));
     };
@@ -39,21 +37,14 @@ pub fn parse(path: &Path, text: &str) -> Result<Ocf, Error> {
     let v: [(usize, &str); 7] = match values.len() {
         7 => values.try_into().unwrap(),
         14 => [values[0], values[6], values[7], values[10], values[11], values[12], values[13]],
-        n => {
-            return Err(err(
-                first_line,
-                format!("expected 7 values (`object NAME STACK HEAP PRIO CACHE TLB MODE`) or 14, found {n}"),
-            ))
-        }
+        n => return Err(err(first_line, format!("expected 7 values (`object NAME STACK HEAP PRIO CACHE TLB MODE`) or 14, found {n}"))),
     };
     let size = |field: &str, (line, value): (usize, &str)| -> Result<u64, Error> {
         let (digits, mult) = match value.strip_suffix(['k', 'K']) {
             Some(d) => (d, 1024),
             None => (value, 1),
         };
-        let n = digits
-            .parse::<u64>()
-            .map_err(|_| err(line, format!("{field} must be a number (optionally with a K suffix), found `{value}`")))?;
+        let n = digits.parse::<u64>().map_err(|_| err(line, format!("{field} must be a number (optionally with a K suffix), found `{value}`")))?;
         n.checked_mul(mult).ok_or_else(|| err(line, format!("{field} `{value}` is too large (at most {} bytes)", u64::MAX)))
     };
     // Sony's gensnap took anything but the exact word as the other choice; a typo

@@ -69,16 +69,13 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let json = args.message_format == MessageFormat::Json;
     let mut emit = |e: Event| match (&e, json) {
         (Event::Compiling { object, kind }, false) => shell.status("Compiling", &format!("{object} ({})", kind.label())),
-        (Event::Compiling { object, kind }, true) => {
-            shell.out(&json!({ "reason": "compiling", "package_id": object, "kind": kind.label() }).to_string())
-        }
+        (Event::Compiling { object, kind }, true) => shell.out(&json!({ "reason": "compiling", "package_id": object, "kind": kind.label() }).to_string()),
         (Event::Running { command, .. }, false) => shell.status("Running", &format!("`{command}`")),
         (Event::Running { object, command }, true) => shell.out(&json!({ "reason": "running", "package_id": object, "command": command }).to_string()),
         (Event::Artifact { .. }, false) => {}
-        (Event::Artifact { object, kind, bin, fresh }, true) => shell.out(
-            &json!({ "reason": "compiler-artifact", "package_id": object, "kind": kind.label(), "filenames": [bin], "fresh": fresh })
-                .to_string(),
-        ),
+        (Event::Artifact { object, kind, bin, fresh }, true) => {
+            shell.out(&json!({ "reason": "compiler-artifact", "package_id": object, "kind": kind.label(), "filenames": [bin], "fresh": fresh }).to_string())
+        }
         (Event::Message { rendered, .. }, false) => {
             eprint!("{rendered}");
             if !rendered.ends_with('\n') {
@@ -101,12 +98,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let profile = if args.release { "release" } else { "dev" };
     shell.status(
         "Finished",
-        &format!(
-            "`{profile}` profile: {} object(s), {} compiled, in {:.2}s",
-            report.objects,
-            report.compiled,
-            report.elapsed.as_secs_f64()
-        ),
+        &format!("`{profile}` profile: {} object(s), {} compiled, in {:.2}s", report.objects, report.compiled, report.elapsed.as_secs_f64()),
     );
     Ok(())
 }

@@ -33,7 +33,13 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         }
         Format::Human => {
             for f in &findings {
-                let state = if f.ok { "ok" } else if f.required { "MISSING" } else { "missing" };
+                let state = if f.ok {
+                    "ok"
+                } else if f.required {
+                    "MISSING"
+                } else {
+                    "missing"
+                };
                 shell.out(&format!("{state:>8}  {:<24} {}", f.name, f.detail));
                 if let Some(fix) = &f.fix {
                     shell.out(&format!("{:>8}  {:<24} fix: {fix}", "", ""));

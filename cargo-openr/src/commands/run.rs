@@ -173,7 +173,14 @@ pub fn exec(args: Args, given: &clap::ArgMatches, shell: &mut Shell) -> anyhow::
     let world = check_sim_options(&args)?;
     let ms_dir = args.ms_dirs[0].clone();
     let project = ms_dir.parent().map(PathBuf::from);
-    let cfg = config::resolve(&ConfigInputs { sdk: args.sdk.clone(), design: args.design.clone(), speed: args.speed.clone(), base: args.base.clone(), project, ..Default::default() })?;
+    let cfg = config::resolve(&ConfigInputs {
+        sdk: args.sdk.clone(),
+        design: args.design.clone(),
+        speed: args.speed.clone(),
+        base: args.base.clone(),
+        project,
+        ..Default::default()
+    })?;
     // The SDK root whose system objects this run loads, as `ops::config` resolves it
     // (`--sdk`, `$OPENRSDK_ROOT` when it is one of ours, `openr.toml`, the per-user default).
     let root = cfg.sdk.value;
@@ -258,7 +265,11 @@ fn base_tree(root: &Path, design: &str, base: &str) -> anyhow::Result<Option<Pat
     }
     let dir = install::base_tree(root, design, base);
     if !dir.join("OPEN-R").is_dir() {
-        anyhow::bail!("the SDK root {} has no base tree {base} ({} is missing): reinstall it with `cargo openr sdk install`", root.display(), dir.join("OPEN-R").display());
+        anyhow::bail!(
+            "the SDK root {} has no base tree {base} ({} is missing): reinstall it with `cargo openr sdk install`",
+            root.display(),
+            dir.join("OPEN-R").display()
+        );
     }
     Ok(Some(dir))
 }
@@ -323,8 +334,8 @@ fn check_sim_options(args: &Args) -> anyhow::Result<Vec<Robot<'_>>> {
 fn to_child(id: &str) -> Forward {
     match id {
         // the world's own (the peer gets them), refused with --sim mujoco, or given below
-        "ms_dirs" | "sim" | "scene" | "robots" | "seed" | "sim_args" | "gdb" | "valgrind" | "tool_args" | "view" | "record" | "robot_socket"
-        | "robot_tcp" | "robot_wait" | "sdk" => Forward::Caller,
+        "ms_dirs" | "sim" | "scene" | "robots" | "seed" | "sim_args" | "gdb" | "valgrind" | "tool_args" | "view" | "record" | "robot_socket" | "robot_tcp"
+        | "robot_wait" | "sdk" => Forward::Caller,
         // per robot
         "trace" | "camera_phase" | "net_bind" | "control" | "speaker_wav" | "mic_wav" => Forward::Caller,
         _ => Forward::Same,
@@ -418,9 +429,35 @@ mod tests {
     fn sim_children_get_every_option_given_and_their_own_per_robot_values() {
         use clap::{Args as _, FromArgMatches};
         let argv = [
-            "run", "A/MS", "B/MS", "--sim", "mujoco", "--seed", "7", "--for", "10s", "--speed", "max", "--trace", "t.jsonl", "--control", "c.sock",
-            "--quiet", "--net-map", "10.0.1.2=127.0.0.1", "--net-map", "10.0.1.3:80=127.0.0.1:8080", "--no-fp-traps", "--base", "WLAN",
-            "--watchdog", "2s", "--port-offset", "100", "--design", "ERS-7",
+            "run",
+            "A/MS",
+            "B/MS",
+            "--sim",
+            "mujoco",
+            "--seed",
+            "7",
+            "--for",
+            "10s",
+            "--speed",
+            "max",
+            "--trace",
+            "t.jsonl",
+            "--control",
+            "c.sock",
+            "--quiet",
+            "--net-map",
+            "10.0.1.2=127.0.0.1",
+            "--net-map",
+            "10.0.1.3:80=127.0.0.1:8080",
+            "--no-fp-traps",
+            "--base",
+            "WLAN",
+            "--watchdog",
+            "2s",
+            "--port-offset",
+            "100",
+            "--design",
+            "ERS-7",
         ];
         let given = super::Args::augment_args(clap::Command::new("run")).try_get_matches_from(argv).unwrap();
         let args = super::Args::from_arg_matches(&given).unwrap();
@@ -431,8 +468,18 @@ mod tests {
         let (c0, c1) = (child(0), child(1));
         for c in [&c0, &c1] {
             for want in [
-                "--for=10s", "--speed=max", "--quiet", "--net-map=10.0.1.2=127.0.0.1", "--net-map=10.0.1.3:80=127.0.0.1:8080", "--no-fp-traps",
-                "--base=WLAN", "--watchdog=2s", "--port-offset=100", "--design=ERS-7", "--sdk", "/sdk",
+                "--for=10s",
+                "--speed=max",
+                "--quiet",
+                "--net-map=10.0.1.2=127.0.0.1",
+                "--net-map=10.0.1.3:80=127.0.0.1:8080",
+                "--no-fp-traps",
+                "--base=WLAN",
+                "--watchdog=2s",
+                "--port-offset=100",
+                "--design=ERS-7",
+                "--sdk",
+                "/sdk",
             ] {
                 assert!(c.iter().any(|a| a == want), "{want} missing from {c:?}");
             }

@@ -50,10 +50,7 @@ pub struct CheckOptions {
 pub fn project_inputs(dir: &Path, design: &str) -> anyhow::Result<CheckOptions> {
     let ms = dir.join("MS");
     if !ms.join("OPEN-R").is_dir() {
-        anyhow::bail!(
-            "`{}` is not an OPEN-R project: no MS/OPEN-R directory (for a bare Memory Stick tree use `cargo openr ms verify`)",
-            dir.display()
-        );
+        anyhow::bail!("`{}` is not an OPEN-R project: no MS/OPEN-R directory (for a bare Memory Stick tree use `cargo openr ms verify`)", dir.display());
     }
     let mut stubs = Vec::new();
     let mut ocfs = Vec::new();
@@ -112,18 +109,18 @@ pub fn check(opts: &CheckOptions) -> anyhow::Result<Report> {
             }
             Err(e) => {
                 let file = e.file().map_or_else(|| stub.clone(), Path::to_path_buf);
-                report.push(
-                    Diagnostic::error("E0008", format!("stub.cfg rejected by stubgen2: {}", e.message()))
-                        .at(file, e.line())
-                        .help("NumOfOSubject / NumOfOObserver must equal the number of `Service : \"Obj.Sub.Data.S|O\", …` lines of each kind (at least one each)"),
-                );
+                report.push(Diagnostic::error("E0008", format!("stub.cfg rejected by stubgen2: {}", e.message())).at(file, e.line()).help(
+                    "NumOfOSubject / NumOfOObserver must equal the number of `Service : \"Obj.Sub.Data.S|O\", …` lines of each kind (at least one each)",
+                ));
             }
         }
     }
     for ocf in &opts.ocfs {
         if let Err(e) = openr_wrappers::ocf::read(ocf) {
             let d = match e.kind() {
-                openr_wrappers::ErrorKind::Ocf { path, line, message } => Diagnostic::error("E0009", format!("malformed .ocf: {message}")).at(path, Some(*line)),
+                openr_wrappers::ErrorKind::Ocf { path, line, message } => {
+                    Diagnostic::error("E0009", format!("malformed .ocf: {message}")).at(path, Some(*line))
+                }
                 _ => Diagnostic::error("E0009", format!("unreadable .ocf: {e}")).at(ocf, None),
             };
             report.push(d.help("the form is `object NAME STACK HEAP PRIO CACHE TLB MODE`, e.g. `object myObject 3072 16384 128 cache tlb user`"));
@@ -344,28 +341,30 @@ fn check_connections(ms: &MsDir, design: &str, services: &BTreeMap<String, Origi
                 continue;
             }
             if ks == Some('O') && ko == Some('S') {
-                report.push(at(Diagnostic::error("E0005", "subject and observer are swapped")
-                    .help(format!("the subject (`.S`) comes first: `{observer} {subject}`"))));
+                report.push(at(
+                    Diagnostic::error("E0005", "subject and observer are swapped").help(format!("the subject (`.S`) comes first: `{observer} {subject}`"))
+                ));
             } else if ks != Some('S') {
                 report.push(at(Diagnostic::error("E0005", format!("`{subject}` is an observer, but the first name of a connection must be a subject (`.S`)"))));
             } else if ko != Some('O') {
-                report.push(at(Diagnostic::error("E0005", format!("`{observer}` is a subject, but the second name of a connection must be an observer (`.O`)"))));
+                report
+                    .push(at(Diagnostic::error("E0005", format!("`{observer}` is a subject, but the second name of a connection must be an observer (`.O`)"))));
             }
             if data_name(subject) != data_name(observer) {
-                report.push(at(Diagnostic::error("E0006", format!(
-                    "DataName differs: `{}` (subject) vs `{}` (observer)", data_name(subject), data_name(observer)
-                )).help("both ends of a connection must carry the same data type; the third parts of the names must be identical")));
+                report.push(at(Diagnostic::error(
+                    "E0006",
+                    format!("DataName differs: `{}` (subject) vs `{}` (observer)", data_name(subject), data_name(observer)),
+                )
+                .help("both ends of a connection must carry the same data type; the third parts of the names must be identical")));
             }
             for name in [subject, observer] {
                 if !services.contains_key(name.as_str()) && !SYSTEM_SERVICES.contains(&name.as_str()) {
-                    report.push(at(Diagnostic::error("E0007", format!("unknown service `{name}`: no object registers it"))
-                        .help(suggest(name, services))));
+                    report.push(at(Diagnostic::error("E0007", format!("unknown service `{name}`: no object registers it")).help(suggest(name, services))));
                 }
             }
             let (a, b) = if ks == Some('O') && ko == Some('S') { (observer, subject) } else { (subject, observer) };
             if let Some((_, _, first)) = seen.iter().find(|(s, o, _)| s == a && o == b) {
-                report.push(at(Diagnostic::error("E0010", format!("duplicate connection `{a} {b}` (first on line {first})"))
-                    .help("remove this line")));
+                report.push(at(Diagnostic::error("E0010", format!("duplicate connection `{a} {b}` (first on line {first})")).help("remove this line")));
             } else {
                 seen.push((a.clone(), b.clone(), line.number));
             }

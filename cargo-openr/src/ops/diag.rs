@@ -121,10 +121,7 @@ mod tests {
     #[test]
     fn human_and_json() {
         let d = Diagnostic::error("E0007", "unknown service `A.B.c.O`").at("MS/CONNECT.CFG", Some(3)).help("declare it");
-        assert_eq!(
-            render(&d, MessageFormat::Human),
-            "error[E0007]: unknown service `A.B.c.O`\n  --> MS/CONNECT.CFG:3\n   = help: declare it"
-        );
+        assert_eq!(render(&d, MessageFormat::Human), "error[E0007]: unknown service `A.B.c.O`\n  --> MS/CONNECT.CFG:3\n   = help: declare it");
         let v: serde_json::Value = serde_json::from_str(&render(&d, MessageFormat::Json)).unwrap();
         assert_eq!(v["level"], "error");
         assert_eq!(v["line"], 3);

@@ -36,13 +36,7 @@ pub fn diagnose(sdk: &Path, exe: &Path) -> Vec<Finding> {
     ] {
         out.push(match which::which(tool) {
             Ok(path) => Finding { name: tool.into(), required, ok: true, detail: with_version(&path), fix: None },
-            Err(_) => Finding {
-                name: tool.into(),
-                required,
-                ok: false,
-                detail: "not found in PATH".into(),
-                fix: Some(format!("apt-get install {pkg}")),
-            },
+            Err(_) => Finding { name: tool.into(), required, ok: false, detail: "not found in PATH".into(), fix: Some(format!("apt-get install {pkg}")) },
         });
     }
     out.push(mujoco());

@@ -17,9 +17,7 @@ pub enum Value {
 pub fn build_env(root: &Path) -> Vec<(&'static str, Value)> {
     let p = |rel: &str| Value::One(root.join(rel).display().to_string());
     let list = |v: Vec<String>| Value::List(v);
-    let host = |name: &str, var: &str| {
-        openr_wrappers::host_tool(name, &[var]).ok().map_or_else(|| format!("{name} (not found)"), |p| p.display().to_string())
-    };
+    let host = |name: &str, var: &str| openr_wrappers::host_tool(name, &[var]).ok().map_or_else(|| format!("{name} (not found)"), |p| p.display().to_string());
     vec![
         ("OPENRSDK_ROOT", Value::One(root.display().to_string())),
         ("CXX", p("bin/mipsel-linux-g++")),
@@ -60,7 +58,6 @@ pub fn to_sh(vars: &[(&'static str, Value)]) -> String {
 
 /// One JSON object, lists as arrays.
 pub fn to_json(vars: &[(&'static str, Value)]) -> String {
-    let map: serde_json::Map<String, serde_json::Value> =
-        vars.iter().map(|(k, v)| (k.to_string(), serde_json::to_value(v).expect("serialisable"))).collect();
+    let map: serde_json::Map<String, serde_json::Value> = vars.iter().map(|(k, v)| (k.to_string(), serde_json::to_value(v).expect("serialisable"))).collect();
     serde_json::to_string_pretty(&map).expect("serialisable")
 }

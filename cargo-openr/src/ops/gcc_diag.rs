@@ -36,7 +36,11 @@ pub struct Message {
 /// A diagnostic's first line: location, level, message text.
 fn head(line: &str) -> Option<(&str, &'static str, &str)> {
     const LEVELS: [(&str, &str); 4] = [(": fatal error: ", "error"), (": error: ", "error"), (": warning: ", "warning"), (": note: ", "note")];
-    LEVELS.iter().filter_map(|(marker, level)| line.find(marker).map(|i| (i, *marker, *level))).min_by_key(|(i, ..)| *i).map(|(i, marker, level)| (&line[..i], level, &line[i + marker.len()..]))
+    LEVELS
+        .iter()
+        .filter_map(|(marker, level)| line.find(marker).map(|i| (i, *marker, *level)))
+        .min_by_key(|(i, ..)| *i)
+        .map(|(i, marker, level)| (&line[..i], level, &line[i + marker.len()..]))
 }
 
 /// `file:line:col`, `file:line` or `file` (ld's and collect2's have no line).

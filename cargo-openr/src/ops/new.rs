@@ -73,13 +73,68 @@ pub struct Created {
 
 /// C++ keywords and names the OPEN-R headers already use for classes.
 const RESERVED: &[&str] = &[
-    "asm", "auto", "bool", "break", "case", "catch", "char", "class", "const", "continue", "default",
-    "delete", "do", "double", "else", "enum", "explicit", "extern", "false", "float", "for", "friend",
-    "goto", "if", "inline", "int", "long", "mutable", "namespace", "new", "operator", "private",
-    "protected", "public", "register", "return", "short", "signed", "sizeof", "static", "struct",
-    "switch", "template", "this", "throw", "true", "try", "typedef", "typename", "union", "unsigned",
-    "using", "virtual", "void", "volatile", "while", "OObject", "OSubject", "OObserver", "RCRegion",
-    "OPENR", "Self",
+    "asm",
+    "auto",
+    "bool",
+    "break",
+    "case",
+    "catch",
+    "char",
+    "class",
+    "const",
+    "continue",
+    "default",
+    "delete",
+    "do",
+    "double",
+    "else",
+    "enum",
+    "explicit",
+    "extern",
+    "false",
+    "float",
+    "for",
+    "friend",
+    "goto",
+    "if",
+    "inline",
+    "int",
+    "long",
+    "mutable",
+    "namespace",
+    "new",
+    "operator",
+    "private",
+    "protected",
+    "public",
+    "register",
+    "return",
+    "short",
+    "signed",
+    "sizeof",
+    "static",
+    "struct",
+    "switch",
+    "template",
+    "this",
+    "throw",
+    "true",
+    "try",
+    "typedef",
+    "typename",
+    "union",
+    "unsigned",
+    "using",
+    "virtual",
+    "void",
+    "volatile",
+    "while",
+    "OObject",
+    "OSubject",
+    "OObserver",
+    "RCRegion",
+    "OPENR",
+    "Self",
 ];
 
 /// Derives the objects' names from the project name, one per role of the template.
@@ -185,7 +240,10 @@ pub fn new(opts: &NewOptions) -> Result<Created, NewError> {
     if dir.exists() && std::fs::read_dir(dir).map_or(true, |mut d| d.next().is_some()) {
         return Err(NewError::NotEmpty(dir.clone()));
     }
-    let io = |p: &Path| { let p = p.to_path_buf(); move |e| NewError::Io(p, e) };
+    let io = |p: &Path| {
+        let p = p.to_path_buf();
+        move |e| NewError::Io(p, e)
+    };
     let mut written = Vec::new();
     for (rel, text) in files {
         let path = dir.join(&rel);

@@ -114,7 +114,11 @@ fn library_path(lib: &str) -> anyhow::Result<PathBuf> {
     let out = Command::new(&gxx).arg(format!("-print-file-name={lib}")).output().with_context(|| format!("cannot run {}", gxx.display()))?;
     let path = PathBuf::from(String::from_utf8_lossy(&out.stdout).trim());
     if !path.is_absolute() || !path.exists() {
-        anyhow::bail!("the objects were built with a sanitizer but {} has no {lib}: install the compiler's sanitizer runtime (e.g. `apt-get install {}`)", gxx.display(), package(lib));
+        anyhow::bail!(
+            "the objects were built with a sanitizer but {} has no {lib}: install the compiler's sanitizer runtime (e.g. `apt-get install {}`)",
+            gxx.display(),
+            package(lib)
+        );
     }
     Ok(std::fs::canonicalize(&path).unwrap_or(path))
 }

@@ -32,11 +32,7 @@ fn the_speaker_wav_holds_exactly_the_pcm_the_program_played() {
     assert_eq!(&played[..tone.len()], tone, "the tone, sample for sample");
     assert!(played[tone.len()..].iter().all(|b| *b == 0), "the zero padding of the last buffer");
     // 32 ms per buffer: consecutive buffers start 4 frames apart.
-    let frames: Vec<u32> = out
-        .lines_starting("SoundPlay : buffer")
-        .iter()
-        .filter_map(|l| l.rsplit(' ').next()?.parse().ok())
-        .collect();
+    let frames: Vec<u32> = out.lines_starting("SoundPlay : buffer").iter().filter_map(|l| l.rsplit(' ').next()?.parse().ok()).collect();
     assert!(frames.len() >= 15 && frames.windows(2).all(|w| w[1] - w[0] == 4), "gapless 32 ms buffers: {frames:?}");
 }
 
@@ -75,7 +71,11 @@ fn the_speaker_is_ready_before_every_start_in_20_of_20_runs() {
         let wav = dir.path().join(format!("speaker{i}.wav"));
         let out = run_ms(&p.ms(), &["--speed", "max", "--for", "1s", "--speaker-wav", wav.to_str().unwrap()]);
         let data = fs::read(&wav).map(|b| wav_data(&b).to_vec()).unwrap_or_default();
-        if out.code == Some(0) && out.stdout.contains("SpeakerStart : primed 2 buffers") && out.stdout.contains("SpeakerStart : done, 8 buffers") && data == want {
+        if out.code == Some(0)
+            && out.stdout.contains("SpeakerStart : primed 2 buffers")
+            && out.stdout.contains("SpeakerStart : done, 8 buffers")
+            && data == want
+        {
             played += 1;
         } else {
             failures.push(format!("run {i}: exit {:?}, {} bytes played\n{}{}", out.code, data.len(), out.stdout, out.stderr));

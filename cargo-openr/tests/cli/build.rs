@@ -55,10 +55,8 @@ fn hello_builds_runs_and_second_build_is_a_no_op() {
     let again = build(&dir, &["--message-format", "json"]);
     assert!(again.status.success(), "{}", text(&again));
     assert!(compiling_lines(&again).is_empty(), "{}", text(&again));
-    let lines: Vec<serde_json::Value> = String::from_utf8_lossy(&again.stdout)
-        .lines()
-        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("not JSON: {l}: {e}")))
-        .collect();
+    let lines: Vec<serde_json::Value> =
+        String::from_utf8_lossy(&again.stdout).lines().map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("not JSON: {l}: {e}"))).collect();
     assert!(lines.iter().all(|v| v["reason"] != "compiling"), "{lines:?}");
     assert!(lines.iter().any(|v| v["reason"] == "compiler-artifact" && v["fresh"] == true), "{lines:?}");
     assert_eq!(lines.last().unwrap()["reason"], "build-finished");
@@ -114,8 +112,7 @@ fn compile_error_shows_file_and_line_and_fails() {
 
     let out = build(&dir, &["--message-format", "json"]);
     assert!(!out.status.success());
-    let lines: Vec<serde_json::Value> =
-        String::from_utf8_lossy(&out.stdout).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let lines: Vec<serde_json::Value> = String::from_utf8_lossy(&out.stdout).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
     assert!(lines.iter().any(|v| v["reason"] == "compiler-message" && v["message"]["rendered"].as_str().unwrap().contains("undeclared_thing")));
     assert_eq!(lines.last().unwrap()["success"], false);
 }
@@ -127,11 +124,7 @@ fn rust_object_template_builds_and_runs() {
     assert!(compiling_lines(&first).contains(&"   Compiling TestDogObserver (C++)".to_string()), "{}", text(&first));
     let stdout = run_1s(&dir);
     let received: Vec<&str> = stdout.lines().filter(|l| l.starts_with("TestDogObserver : received")).collect();
-    assert_eq!(
-        received,
-        (1..=3).map(|i| format!("TestDogObserver : received \"hello {i} from TestDogSubject\"")).collect::<Vec<_>>(),
-        "{stdout}"
-    );
+    assert_eq!(received, (1..=3).map(|i| format!("TestDogObserver : received \"hello {i} from TestDogSubject\"")).collect::<Vec<_>>(), "{stdout}");
     let again = build(&dir, &["--message-format", "json"]);
     assert!(again.status.success(), "{}", text(&again));
     assert!(compiling_lines(&again).is_empty(), "{}", text(&again));

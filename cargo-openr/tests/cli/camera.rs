@@ -33,9 +33,7 @@ fn saved_bmps_show_the_frame_the_camera_took() {
         let o = 54 + ((h - 1 - y) * w + x) * 3;
         (bmp[o + 2] as i32, bmp[o + 1] as i32, bmp[o] as i32)
     };
-    let close = |got: (i32, i32, i32), want: (i32, i32, i32)| {
-        (got.0 - want.0).abs() <= 24 && (got.1 - want.1).abs() <= 24 && (got.2 - want.2).abs() <= 24
-    };
+    let close = |got: (i32, i32, i32), want: (i32, i32, i32)| (got.0 - want.0).abs() <= 24 && (got.1 - want.1).abs() <= 24 && (got.2 - want.2).abs() <= 24;
     for (x, y, want) in [(20, 20, (220, 30, 30)), (180, 30, (30, 40, 220)), (100, 150, (20, 200, 40)), (60, 100, (220, 30, 30))] {
         assert!(close(px(x, y), want), "pixel ({x},{y}) = {:?}, the image had {want:?}", px(x, y));
     }

@@ -64,12 +64,8 @@ fn check_elf(elf: &[u8]) -> Result<(), String> {
 }
 
 fn programs() -> Vec<PathBuf> {
-    let mut v: Vec<PathBuf> = fs::read_dir(repo().join("testdata/programs"))
-        .unwrap()
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| p.join("Makefile").is_file())
-        .collect();
+    let mut v: Vec<PathBuf> =
+        fs::read_dir(repo().join("testdata/programs")).unwrap().flatten().map(|e| e.path()).filter(|p| p.join("Makefile").is_file()).collect();
     v.sort();
     v
 }
@@ -131,10 +127,7 @@ fn every_program_of_the_corpus_builds_unmodified() {
     // Makefiles require.
     let results: Vec<(usize, Vec<String>)> = std::thread::scope(|s| {
         let chunks: Vec<Vec<&PathBuf>> = (0..2).map(|w| programs.iter().skip(w).step_by(2).collect()).collect();
-        let handles: Vec<_> = chunks
-            .into_iter()
-            .map(|chunk| s.spawn(move || chunk.into_iter().map(|p| build_program(p, root)).collect::<Vec<_>>()))
-            .collect();
+        let handles: Vec<_> = chunks.into_iter().map(|chunk| s.spawn(move || chunk.into_iter().map(|p| build_program(p, root)).collect::<Vec<_>>())).collect();
         handles.into_iter().flat_map(|h| h.join().unwrap()).collect()
     });
     let objects: usize = results.iter().map(|r| r.0).sum();

@@ -129,15 +129,20 @@ fn json_compiler_messages_carry_spans_and_colour_follows_color() {
     let (warn_line, err_line) = (lines as u64 + 2, lines as u64 + 3);
     let out = cargo_openr_in(&dir, &["build", "--sdk", sdk_root().to_str().unwrap(), "--message-format", "json", "--cxxflags", "-Wall"], &[]);
     assert_eq!(out.status.code(), Some(1), "{}", text(&out));
-    let records: Vec<serde_json::Value> = String::from_utf8_lossy(&out.stdout).lines().map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{l}: {e}"))).collect();
+    let records: Vec<serde_json::Value> =
+        String::from_utf8_lossy(&out.stdout).lines().map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{l}: {e}"))).collect();
     let messages: Vec<&serde_json::Value> = records.iter().filter(|r| r["reason"] == "compiler-message").map(|r| &r["message"]).collect();
-    let error = messages.iter().find(|m| m["level"] == "error" && m["message"].as_str().unwrap().contains("no_such_function")).unwrap_or_else(|| panic!("{messages:#?}"));
+    let error = messages
+        .iter()
+        .find(|m| m["level"] == "error" && m["message"].as_str().unwrap().contains("no_such_function"))
+        .unwrap_or_else(|| panic!("{messages:#?}"));
     let span = &error["spans"][0];
     assert!(span["file_name"].as_str().unwrap().ends_with("Legacy.cc"), "{span}");
     assert_eq!(span["line_start"], err_line, "{span}");
     assert!(span["column_start"].as_u64().unwrap() > 1, "{span}");
     assert!(error["rendered"].as_str().unwrap().contains("no_such_function(1)"), "the source excerpt: {error}");
-    let warning = messages.iter().find(|m| m["level"] == "warning" && m["message"].as_str().unwrap().contains("unused_x")).unwrap_or_else(|| panic!("{messages:#?}"));
+    let warning =
+        messages.iter().find(|m| m["level"] == "warning" && m["message"].as_str().unwrap().contains("unused_x")).unwrap_or_else(|| panic!("{messages:#?}"));
     assert_eq!(warning["code"]["code"], "-Wunused-variable", "{warning}");
     assert_eq!(warning["spans"][0]["line_start"], warn_line, "{warning}");
     assert!(!String::from_utf8_lossy(&out.stdout).contains('\x1b'), "no colour in JSON");
@@ -161,7 +166,8 @@ fn clean_build_json(dir: &Path, jobs: &str) -> (String, Vec<(String, u64)>) {
     let objs = dir.join("MS/OPEN-R/MW/OBJS");
     let _ = fs::remove_dir_all(&objs);
     let out = openr_build(dir, &["-j", jobs, "--message-format", "json"], &[]);
-    let mut bins: Vec<(String, u64)> = fs::read_dir(&objs).unwrap().map(|e| e.unwrap()).map(|e| (e.file_name().to_string_lossy().into_owned(), e.metadata().unwrap().len())).collect();
+    let mut bins: Vec<(String, u64)> =
+        fs::read_dir(&objs).unwrap().map(|e| e.unwrap()).map(|e| (e.file_name().to_string_lossy().into_owned(), e.metadata().unwrap().len())).collect();
     bins.sort();
     (String::from_utf8_lossy(&out.stdout).into_owned(), bins)
 }

@@ -49,11 +49,7 @@ fn new_subject_observer_builds_and_runs() {
     let (dir, _tmp, stdout) = new_build_run("subject-observer");
     assert!(dir.join("MS/OPEN-R/MW/OBJS/TESTDOGS.BIN").is_file() && dir.join("MS/OPEN-R/MW/OBJS/TESTDOGO.BIN").is_file());
     let received: Vec<&str> = stdout.lines().filter(|l| l.starts_with("TestDogObserver : received")).collect();
-    assert_eq!(
-        received,
-        (1..=3).map(|i| format!("TestDogObserver : received \"hello {i} from TestDogSubject\"")).collect::<Vec<_>>(),
-        "{stdout}"
-    );
+    assert_eq!(received, (1..=3).map(|i| format!("TestDogObserver : received \"hello {i} from TestDogSubject\"")).collect::<Vec<_>>(), "{stdout}");
 }
 
 #[test]
@@ -93,12 +89,8 @@ fn new_refuses_bad_names_and_existing_dirs() {
 /// (services read from the objects) once built.
 #[test]
 fn check_passes_on_every_program() {
-    let mut programs: Vec<PathBuf> = fs::read_dir(repo().join("testdata/programs"))
-        .unwrap()
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| p.join("Makefile").is_file())
-        .collect();
+    let mut programs: Vec<PathBuf> =
+        fs::read_dir(repo().join("testdata/programs")).unwrap().flatten().map(|e| e.path()).filter(|p| p.join("Makefile").is_file()).collect();
     programs.sort();
     let root = sdk_root();
     let failures: Vec<String> = std::thread::scope(|s| {
@@ -185,10 +177,7 @@ fn broken_fixtures_are_reported() {
             };
             assert!(stderr.contains(&shown) && stderr.contains(&at), "{name}: want {shown} at {at}:\n{stderr}");
             let hit = records.iter().any(|r| {
-                r["code"] == code
-                    && r["level"] == level
-                    && r["file"].as_str().is_some_and(|f| Path::new(f).ends_with(path))
-                    && r["line"].as_u64() == line
+                r["code"] == code && r["level"] == level && r["file"].as_str().is_some_and(|f| Path::new(f).ends_with(path)) && r["line"].as_u64() == line
             });
             assert!(hit, "{name}: no JSON record {want}: {records:?}");
         }

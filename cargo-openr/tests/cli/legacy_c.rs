@@ -20,11 +20,7 @@ fn a_class_header_with_using_namespace_std_is_included_by_the_stub() {
     let p = build("using-std");
     let out = run_ms(&p.ms(), &RUN);
     assert_ok(&out);
-    assert_lines(
-        &out,
-        "MotionList :",
-        &["MotionList : 3 motions: sit stand walk", "MotionList : total 2400 ms", "MotionList : stopped"],
-    );
+    assert_lines(&out, "MotionList :", &["MotionList : 3 motions: sit stand walk", "MotionList : total 2400 ms", "MotionList : stopped"]);
 }
 
 #[test]
@@ -84,11 +80,7 @@ fn a_subname_used_twice_builds_with_the_projects_def_h_patch() {
     assert_lines(
         &out,
         "Console :",
-        &[
-            "Console : obsStdin = 0 (Console.Stdin.char.O)",
-            "Console : obsStdinLine = 1 (Console.Stdin.RCRegion.O)",
-            "Console : 2 observers, 12 basic entries",
-        ],
+        &["Console : obsStdin = 0 (Console.Stdin.char.O)", "Console : obsStdinLine = 1 (Console.Stdin.RCRegion.O)", "Console : 2 observers, 12 basic entries"],
     );
 }
 
@@ -98,13 +90,7 @@ fn an_exception_escaping_do_start_is_reported_and_fails_the_run() {
     let out = run_ms(&p.ms(), &RUN);
     assert_ne!(out.code, Some(0), "stdout:\n{}\nstderr:\n{}", out.stdout, out.stderr);
     assert!(out.stdout.contains("Calib : loading /MS/OPEN-R/MW/DATA/P/CALIB.DAT"), "{}", out.stdout);
-    assert!(
-        out.stderr.contains(
-            "error: object `calib`: uncaught C++ exception std::runtime_error in DoStart: calibration file missing\n"
-        ),
-        "{}",
-        out.stderr
-    );
+    assert!(out.stderr.contains("error: object `calib`: uncaught C++ exception std::runtime_error in DoStart: calibration file missing\n"), "{}", out.stderr);
     assert!(out.stderr.contains("error: object `calib`") && out.stderr.contains("SIGABRT"), "then the crash report:\n{}", out.stderr);
     assert!(!out.stderr.contains("Rust cannot catch foreign exceptions"), "{}", out.stderr);
     assert!(!out.stdout.contains("Calib : offsets"), "{}", out.stdout);

@@ -90,11 +90,8 @@ fn gcc33_code_builds_unmodified_with_a_note_per_repair_and_runs() {
         assert!(notes.iter().any(|n| n.contains(class)), "a note `{file}:{line}:…: note: [cargo-openr] repaired {class}`:\n{log}");
     }
     // All nine implicit typenames of the header are named, each on its own line.
-    let typename_lines: std::collections::BTreeSet<&str> = log
-        .lines()
-        .filter(|l| l.starts_with("RingBuffer.h:") && l.contains("repaired implicit typename"))
-        .map(|l| l.split(':').nth(1).unwrap())
-        .collect();
+    let typename_lines: std::collections::BTreeSet<&str> =
+        log.lines().filter(|l| l.starts_with("RingBuffer.h:") && l.contains("repaired implicit typename")).map(|l| l.split(':').nth(1).unwrap()).collect();
     assert!(typename_lines.len() >= 9, "{typename_lines:?}\n{log}");
     // What -fpermissive accepts is warned about, never repaired.
     assert!(!log.lines().any(|l| l.starts_with("Permissive.") && l.contains("repaired")), "{log}");
@@ -178,14 +175,7 @@ fn a_repaired_header_keeps_its_file_and_line_for_gdb() {
 #[test]
 fn dependency_files_and_compile_commands_name_the_user_files() {
     let s = Scratch::new();
-    let out = Command::new(exe())
-        .args(["build", "--sdk"])
-        .arg(sdk_root())
-        .arg("--path")
-        .arg(s.project())
-        .env("TMPDIR", s.tmp.path())
-        .output()
-        .unwrap();
+    let out = Command::new(exe()).args(["build", "--sdk"]).arg(sdk_root()).arg("--path").arg(s.project()).env("TMPDIR", s.tmp.path()).output().unwrap();
     let log = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
     assert!(out.status.success(), "{log}");
     assert!(log.contains("repaired implicit typename"), "{log}");
@@ -213,12 +203,7 @@ fn find_files(dir: &Path, ext: &str, out: &mut Vec<PathBuf>) {
 /// Runs the SDK's g++ and the host g++ with the wrapper's flags on `unit` in `dir`:
 /// (wrapper exit code, wrapper stderr, host exit code, host stderr).
 fn both_compilers(dir: &Path, tmp: &Path, unit: &str) -> (Option<i32>, String, Option<i32>, String) {
-    let wrapper = Command::new(sdk_root().join("bin/mipsel-linux-g++"))
-        .args(["-c", unit, "-o", "w.o"])
-        .env("TMPDIR", tmp)
-        .current_dir(dir)
-        .output()
-        .unwrap();
+    let wrapper = Command::new(sdk_root().join("bin/mipsel-linux-g++")).args(["-c", unit, "-o", "w.o"]).env("TMPDIR", tmp).current_dir(dir).output().unwrap();
     let host = Command::new("g++").args(openr_wrappers::cxx_flags()).args(["-c", unit, "-o", "h.o"]).current_dir(dir).output().unwrap();
     let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
     (wrapper.status.code(), text(&wrapper.stderr), host.status.code(), text(&host.stderr))
@@ -272,12 +257,7 @@ fn a_unit_that_compiles_runs_the_host_compiler_once_with_the_usual_flags() {
     fs::write(dir.path().join("ok.cc"), "int f() { return 1; }\n").unwrap();
     fs::write(dir.path().join("old.cc"), "template <class T> struct H { T::size_type n; };\nH<int>* h;\n").unwrap();
     let compile = |unit: &str| {
-        Command::new(sdk_root().join("bin/mipsel-linux-g++"))
-            .args(["-c", unit])
-            .env("OPENR_HOST_CXX", &gxx)
-            .current_dir(dir.path())
-            .output()
-            .unwrap()
+        Command::new(sdk_root().join("bin/mipsel-linux-g++")).args(["-c", unit]).env("OPENR_HOST_CXX", &gxx).current_dir(dir.path()).output().unwrap()
     };
     let out = compile("ok.cc");
     assert!(out.status.success() && out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));

@@ -63,7 +63,12 @@ fn a_panicking_rust_object_fails_the_run_naming_it() {
     assert!(out.code.is_some_and(|c| c != 0), "a panic is not a success: exit {:?}\n{}\n{}", out.code, out.stdout, out.stderr);
     assert!(out.stderr.contains("the ball is gone"), "the panic message:\n{}", out.stderr);
     // The crash report names the object (its ocf name) and what it was running.
-    assert!(out.stderr.contains("object `panicDogSubject` (/MS/OPEN-R/MW/OBJS/PANICDOS.BIN) crashed with SIGABRT"), "the object is named:\n{}\n{}", out.stdout, out.stderr);
+    assert!(
+        out.stderr.contains("object `panicDogSubject` (/MS/OPEN-R/MW/OBJS/PANICDOS.BIN) crashed with SIGABRT"),
+        "the object is named:\n{}\n{}",
+        out.stdout,
+        out.stderr
+    );
 }
 
 #[test]

@@ -28,7 +28,9 @@ fn make_install_fails_on_an_undefined_helper_and_installs_nothing() {
     assert!(!ok, "make install must fail:\n{log}");
     assert!(log.contains("undefined reference to `missing_helper(int)'"), "ld's own line, demangled:\n{log}");
     assert!(
-        log.contains("mkbin: cannot link counter.bin:\n  undefined symbol `missing_helper(int)`, referenced from Counter.o in Counter::DoStart(OSystemEvent const&) at "),
+        log.contains(
+            "mkbin: cannot link counter.bin:\n  undefined symbol `missing_helper(int)`, referenced from Counter.o in Counter::DoStart(OSystemEvent const&) at "
+        ),
         "mkbin's summary names the .bin, the symbol, the object and the function:\n{log}"
     );
     assert!(log.contains("Counter.cc:26") && log.contains("hint: no object, archive or library of the link defines it"), "{log}");
@@ -46,11 +48,7 @@ fn cargo_openr_build_reports_the_undefined_helper_in_json() {
     assert!(!out.status.success());
     let stdout = String::from_utf8_lossy(&out.stdout);
     let lines: Vec<serde_json::Value> = stdout.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
-    let rendered: Vec<&str> = lines
-        .iter()
-        .filter(|v| v["reason"] == "compiler-message")
-        .filter_map(|v| v["message"]["rendered"].as_str())
-        .collect();
+    let rendered: Vec<&str> = lines.iter().filter(|v| v["reason"] == "compiler-message").filter_map(|v| v["message"]["rendered"].as_str()).collect();
     let msg = rendered.iter().find(|r| r.contains("missing_helper(int)")).unwrap_or_else(|| panic!("no message names the symbol:\n{stdout}"));
     assert!(msg.contains("counter.bin:") && msg.contains("referenced from") && msg.contains("Counter.o"), "{msg}");
     assert!(msg.contains("undefined reference to `missing_helper(int)'"), "the linker's lines are in the message:\n{msg}");

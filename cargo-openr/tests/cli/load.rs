@@ -55,12 +55,7 @@ fn run_and_check_refuse_damaged_objects_with_their_path() {
     let bin = ms.join("OPEN-R/MW/OBJS/HELLO.BIN");
     let good = gunzip(&bin);
     let sdk = sdk_root().to_str().unwrap().to_string();
-    let expected = [
-        "loadable segment",
-        "the program header table (offset",
-        "built for machine 8 (MIPS",
-        "outside the file's loadable segments",
-    ];
+    let expected = ["loadable segment", "the program header table (offset", "built for machine 8 (MIPS", "outside the file's loadable segments"];
     for ((what, elf), want) in damaged(&good).into_iter().zip(expected) {
         gzip_to(&bin, &elf);
         let r = run_ms(&ms, &["--for", "1s", "--sdk", &sdk]);
@@ -113,7 +108,11 @@ fn check_test_loads_each_object_and_names_an_undefined_symbol() {
 
     let r = run_ms(&dir.join("MS"), &["--for", "1s", "--sdk", sdk_root().to_str().unwrap()]);
     assert!(matches!(r.code, Some(c) if c != 0), "{:?} {}", r.code, r.stderr);
-    assert!(r.stderr.contains("COUNTER.BIN") && r.stderr.contains("`missing_helper(int)` (_Z14missing_helperi)"), "run names the symbol demangled:\n{}", r.stderr);
+    assert!(
+        r.stderr.contains("COUNTER.BIN") && r.stderr.contains("`missing_helper(int)` (_Z14missing_helperi)"),
+        "run names the symbol demangled:\n{}",
+        r.stderr
+    );
 }
 
 #[test]

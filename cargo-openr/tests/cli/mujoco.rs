@@ -38,21 +38,14 @@ fn targets(trace: &[Value], locator: &str) -> BTreeMap<u64, f64> {
 
 /// The joint's angle read back in each sensor record (frame -> degrees).
 fn readings(trace: &[Value], locator: &str) -> BTreeMap<u64, f64> {
-    trace
-        .iter()
-        .filter(|r| r["kind"] == "sensor")
-        .filter_map(|r| Some((r["frame"].as_u64()?, r["joints"][locator].as_f64()?)))
-        .collect()
+    trace.iter().filter(|r| r["kind"] == "sensor").filter_map(|r| Some((r["frame"].as_u64()?, r["joints"][locator].as_f64()?))).collect()
 }
 
 /// (largest, RMS) difference between reading and target over frames in `from..to`.
 fn tracking_error(trace: &[Value], locator: &str, from: u64, to: u64) -> (f64, f64) {
     let t = targets(trace, locator);
-    let errs: Vec<f64> = readings(trace, locator)
-        .into_iter()
-        .filter(|(f, _)| (from..to).contains(f))
-        .filter_map(|(f, v)| Some((v - t.get(&f)?).abs()))
-        .collect();
+    let errs: Vec<f64> =
+        readings(trace, locator).into_iter().filter(|(f, _)| (from..to).contains(f)).filter_map(|(f, v)| Some((v - t.get(&f)?).abs())).collect();
     assert!(errs.len() > 20, "too few readings of {locator} with a target in frames {from}..{to}");
     let max = errs.iter().cloned().fold(0.0, f64::max);
     (max, (errs.iter().map(|e| e * e).sum::<f64>() / errs.len() as f64).sqrt())
@@ -124,11 +117,8 @@ fn a_standing_robot_stays_up_and_a_pushed_one_reports_it_through_the_acceleromet
     let state_arg = format!("--sim-arg=--state={}", truth.display());
     // movelegs stands from frame 640 (5.12 s) on: 10 s more of holding its posture.
     sim(&b.ms(), &["--for", "15.5s", "--trace", trace.to_str().unwrap(), &state_arg]);
-    let heights: Vec<f64> = state(&truth)
-        .iter()
-        .filter(|s| s["time_ms"].as_u64().unwrap() >= 5300)
-        .map(|s| s["robots"][0]["pos"][2].as_f64().unwrap())
-        .collect();
+    let heights: Vec<f64> =
+        state(&truth).iter().filter(|s| s["time_ms"].as_u64().unwrap() >= 5300).map(|s| s["robots"][0]["pos"][2].as_f64().unwrap()).collect();
     assert!(heights.len() > 1200, "{} ground-truth frames after 5.3 s", heights.len());
     let (lo, hi) = heights.iter().fold((f64::MAX, f64::MIN), |(lo, hi), h| (lo.min(*h), hi.max(*h)));
     assert!(lo > 0.09 && hi < 0.18 && hi - lo < 0.01, "trunk height {lo:.3}..{hi:.3} m while standing 10 s");

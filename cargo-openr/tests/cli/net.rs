@@ -167,37 +167,37 @@ fn bad_input_gets_the_error_codes_of_the_spec() {
     let (n, _) = sink.recv_from(&mut buf).unwrap();
     assert_eq!(&buf[..n], b"datagram");
     let expected: &[(&str, i32)] = &[
-        ("create-pop3", 27),            // ANT_ENDPOINT_NOFACTORY
-        ("send-unconnected", 17),       // TCP_OPERATION_INVALID
+        ("create-pop3", 27),      // ANT_ENDPOINT_NOFACTORY
+        ("send-unconnected", 17), // TCP_OPERATION_INVALID
         ("connect", 0),
-        ("listen-connected", 17),       // TCP_OPERATION_INVALID
-        ("send-oversized", 16),         // TCP_BUFFER_INVALID: beyond the shared buffer
+        ("listen-connected", 17), // TCP_OPERATION_INVALID
+        ("send-oversized", 16),   // TCP_BUFFER_INVALID: beyond the shared buffer
         ("send-empty", 16),
         ("send-outside", 16),
-        ("tcp-unknown-op", 18),         // TCP_OPERATION_UNKNOWN
+        ("tcp-unknown-op", 18), // TCP_OPERATION_UNKNOWN
         ("send", 0),
-        ("receive-reset", 3),           // TCP_CONNECTION_RESET
+        ("receive-reset", 3), // TCP_CONNECTION_RESET
         ("close", 0),
-        ("send-closed", 2),             // TCP_CONNECTION_CLOSED: a closed endpoint reused
+        ("send-closed", 2), // TCP_CONNECTION_CLOSED: a closed endpoint reused
         ("receive-closed", 2),
         ("close-closed", 2),
-        ("connect-refused", 8),         // TCP_PORT_UNREACHABLE
-        ("listen-inuse", 6),            // TCP_ADDRESSINUSE
+        ("connect-refused", 8), // TCP_PORT_UNREACHABLE
+        ("listen-inuse", 6),    // TCP_ADDRESSINUSE
         ("abort", 0),
-        ("udp-send-unbound", 14),       // UDP_OPERATION_INVALID
+        ("udp-send-unbound", 14), // UDP_OPERATION_INVALID
         ("udp-bind", 0),
-        ("udp-addressinuse", 4),        // UDP_ADDRESSINUSE (TCP's is 6)
-        ("udp-oversized", 10),          // UDP_MESSAGE_TOO_LONG
-        ("udp-send-outside", 13),       // UDP_BUFFER_INVALID (TCP's is 16)
-        ("udp-unknown-op", 15),         // UDP_OPERATION_UNKNOWN
+        ("udp-addressinuse", 4),  // UDP_ADDRESSINUSE (TCP's is 6)
+        ("udp-oversized", 10),    // UDP_MESSAGE_TOO_LONG
+        ("udp-send-outside", 13), // UDP_BUFFER_INVALID (TCP's is 16)
+        ("udp-unknown-op", 15),   // UDP_OPERATION_UNKNOWN
         ("udp-send", 0),
         ("udp-close", 0),
-        ("udp-send-closed", 2),         // UDP_CONNECTION_CLOSED
+        ("udp-send-closed", 2),            // UDP_CONNECTION_CLOSED
         ("dns-address-before-lookup", 10), // DNS_OPERATION_INVALID
         ("dns-lookup", 0),
-        ("dns-alias-99", 8),            // DNS_INDEX_INVALID
+        ("dns-alias-99", 8), // DNS_INDEX_INVALID
         ("dns-close", 0),
-        ("dns-lookup-closed", 6),       // DNS_CONNECTION_CLOSED
+        ("dns-lookup-closed", 6), // DNS_CONNECTION_CLOSED
     ];
     for (check, code) in expected {
         let line = format!("NetErrors : {check} = {code}\n");

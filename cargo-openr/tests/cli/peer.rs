@@ -139,12 +139,8 @@ fn python_lockstep_run(dir: &Path, tag: &str, secs: u32) -> (RunOutput, String, 
         &[],
     );
     assert!(wait_for_path(&sock, Duration::from_secs(60)), "no robot socket");
-    let peer = Command::new("python3")
-        .arg(repo().join("tools/robot_peer.py"))
-        .arg(&sock)
-        .args(["--record", record.to_str().unwrap()])
-        .output()
-        .expect("python3");
+    let peer =
+        Command::new("python3").arg(repo().join("tools/robot_peer.py")).arg(&sock).args(["--record", record.to_str().unwrap()]).output().expect("python3");
     let out = run.wait(Duration::from_secs(120));
     assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
     assert!(peer.status.success(), "peer failed: {}", String::from_utf8_lossy(&peer.stderr));
@@ -180,12 +176,8 @@ fn lockstep_python_peer_drives_the_clock_and_supplies_the_joint_angles() {
     let announced: Vec<u64> = frames.iter().filter(|f| f["camera_next"] == true).map(|f| f["frame"].as_u64().unwrap() + 1).collect();
     assert_eq!(due.len(), 90, "{due:?}");
     assert_eq!(announced[..90], due[..], "camera_next must come one frame before camera_due");
-    let locator: HashMap<u64, String> = welcome["primitives"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|p| (p["id"].as_u64().unwrap(), p["locator"].as_str().unwrap().to_string()))
-        .collect();
+    let locator: HashMap<u64, String> =
+        welcome["primitives"].as_array().unwrap().iter().map(|p| (p["id"].as_u64().unwrap(), p["locator"].as_str().unwrap().to_string())).collect();
     // the trace's joint readings are the targets the peer echoed back (newest frame of each vector)
     let trace: Vec<Value> = trace_text.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
     assert_no_gaps(&trace, 375);
@@ -234,11 +226,7 @@ fn a_peer_attaching_mid_run_and_leaving_loses_no_frame() {
     let dir = tempfile::tempdir().unwrap();
     let sock = dir.path().join("robot.sock");
     let trace = dir.path().join("trace.jsonl");
-    let run = spawn_ms(
-        &b.ms(),
-        &["--speed", "4", "--for", "6s", "--trace", trace.to_str().unwrap(), "--robot-socket", sock.to_str().unwrap()],
-        &[],
-    );
+    let run = spawn_ms(&b.ms(), &["--speed", "4", "--for", "6s", "--trace", trace.to_str().unwrap(), "--robot-socket", sock.to_str().unwrap()], &[]);
     let mut s = connect_unix(&sock, Duration::from_secs(60));
     std::thread::sleep(Duration::from_millis(300)); // let the robot run first
     s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();

@@ -191,7 +191,8 @@ fn a_recording_keeps_the_speaker_sound_on_the_virtual_timeline() {
     let rec = dir.path().join("rec");
     let out = run_ms(&p.ms(), &["--speed", "max", "--for", "2s", "--record", rec.to_str().unwrap()]);
     assert_eq!(out.code, Some(0), "{}", out.stderr);
-    let first: u64 = out.lines_starting("SoundPlay : buffer 0 played from frame").first().and_then(|l| l.rsplit(' ').next()?.parse().ok()).expect("buffer 0 played");
+    let first: u64 =
+        out.lines_starting("SoundPlay : buffer 0 played from frame").first().and_then(|l| l.rsplit(' ').next()?.parse().ok()).expect("buffer 0 played");
     let wav = std::fs::read(rec.join("speaker.wav")).unwrap();
     let tone = std::fs::read(p.ms().join("OPEN-R/MW/DATA/P/TONE.WAV")).unwrap();
     let (played, tone) = (wav_data(&wav), wav_data(&tone));
@@ -248,7 +249,12 @@ fn bad_recordings_are_clear_errors() {
     std::fs::create_dir_all(good.join("camera")).unwrap();
     let manifest = r#"{"format":"cargo-openr recording","version":1,"design":"ERS-7","trace":"trace.jsonl","camera":"camera.jsonl","speaker":"speaker.wav"}"#;
     std::fs::write(good.join("recording.json"), manifest).unwrap();
-    let sensor = |t: u64| format!(r#"{{"t_ms":{t},"frame":{},"kind":"sensor","first_frame":1,"joints":{{"PRM:/r2/c1-Joint2:21":1.5}},"accel":[0,0,9.8],"paws":[true,true,true,true]}}"#, t / 8);
+    let sensor = |t: u64| {
+        format!(
+            r#"{{"t_ms":{t},"frame":{},"kind":"sensor","first_frame":1,"joints":{{"PRM:/r2/c1-Joint2:21":1.5}},"accel":[0,0,9.8],"paws":[true,true,true,true]}}"#,
+            t / 8
+        )
+    };
     std::fs::write(good.join("trace.jsonl"), format!("{}\n{}\n", sensor(32), sensor(64))).unwrap();
     std::fs::write(good.join("camera.jsonl"), "{\"n\":1,\"t_ms\":40,\"frame\":5,\"file\":\"camera/000001.png\"}\n").unwrap();
     std::fs::write(good.join("camera/000001.png"), b"\x89PNG").unwrap();

@@ -182,10 +182,8 @@ fn blinkleds_lights_and_ears_follow_the_periods_the_objects_set() {
     }
     // every flick comes down within the 7 s run (the last goes up at 6152 ms)
     for up in &ups {
-        let down = ears
-            .iter()
-            .find(|e| e.1 == up.1 && e.2 == 0 && e.0 > up.0)
-            .unwrap_or_else(|| panic!("{} up at {} ms never comes down: {ears:?}", up.1, up.0));
+        let down =
+            ears.iter().find(|e| e.1 == up.1 && e.2 == 0 && e.0 > up.0).unwrap_or_else(|| panic!("{} up at {} ms never comes down: {ears:?}", up.1, up.0));
         assert_eq!(down.0 - up.0, 16 * FRAME_MS, "{} held {} ms", up.1, down.0 - up.0);
     }
     assert!(ears.iter().any(|e| e.1 == RIGHT_EAR));
@@ -383,10 +381,7 @@ fn sensorkey_waits_for_return_and_prints_what_the_robot_sensed() {
     let sensors = kind(&trace, "sensor");
     for (_, first) in &vectors {
         let newest = first + 3;
-        let rec = sensors
-            .iter()
-            .find(|r| frame(r) == newest)
-            .unwrap_or_else(|| panic!("no sensor record for frame {newest}"));
+        let rec = sensors.iter().find(|r| frame(r) == newest).unwrap_or_else(|| panic!("no sensor record for frame {newest}"));
         assert_eq!(rec["first_frame"].as_u64(), Some(*first));
         let printed = &frames[&newest];
         for (loc, v) in rec["joints"].as_object().unwrap() {
@@ -482,8 +477,18 @@ fn movelegs_reaches_its_base_posture() {
     // base posture of MovingLegs.h (J1 J2 J3 per leg), reached after the 1 s adjustment and
     // held at the end (the swing's last frame stops 1 deg short of it: J1 within 1 deg)
     let base = [
-        ("21", 30.0), ("22", 10.0), ("23", 30.0), ("31", -30.0), ("32", 10.0), ("33", 30.0),
-        ("41", 30.0), ("42", 10.0), ("43", 30.0), ("51", -30.0), ("52", 10.0), ("53", 30.0),
+        ("21", 30.0),
+        ("22", 10.0),
+        ("23", 30.0),
+        ("31", -30.0),
+        ("32", 10.0),
+        ("33", 30.0),
+        ("41", 30.0),
+        ("42", 10.0),
+        ("43", 30.0),
+        ("51", -30.0),
+        ("52", 10.0),
+        ("53", 30.0),
     ];
     let s = last_sensor(&trace);
     for (n, v) in base {
@@ -591,11 +596,7 @@ fn soundplay_streams_the_wav_gaplessly_to_the_speaker() {
     assert!(out.stdout.contains("SoundPlay : mute 0 power 0 volume 0 type 0 unmute 0"), "{}", out.stdout);
     assert!(out.stdout.contains("SoundPlay : done, 16 buffers"), "{}", out.stdout);
     // 32 ms per buffer: the speaker starts each one 4 frames after the previous one
-    let starts: Vec<u64> = out
-        .lines_starting("SoundPlay : buffer ")
-        .iter()
-        .map(|l| l.split_whitespace().last().unwrap().parse().unwrap())
-        .collect();
+    let starts: Vec<u64> = out.lines_starting("SoundPlay : buffer ").iter().map(|l| l.split_whitespace().last().unwrap().parse().unwrap()).collect();
     assert_eq!(starts.len(), 16, "{}", out.stdout);
     assert!(starts.windows(2).all(|w| w[1] - w[0] == 4), "buffer start frames {starts:?}");
     // what the speaker played: the tone, followed by the zero padding of the last buffer
@@ -620,8 +621,7 @@ fn soundrec_records_the_microphone_into_a_wav() {
     assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
     assert!(out.stdout.contains("SoundRec : saved /MS/RECORD.WAV, 64000 bytes in 63 blocks"), "{}", out.stdout);
     // ERS-7 mic: 16 ms blocks (2 frames) of 1024 bytes, 16 kHz 16-bit stereo
-    let blocks: Vec<Vec<String>> =
-        out.lines_starting("SoundRec : block ").iter().map(|l| l.split_whitespace().map(str::to_string).collect()).collect();
+    let blocks: Vec<Vec<String>> = out.lines_starting("SoundRec : block ").iter().map(|l| l.split_whitespace().map(str::to_string).collect()).collect();
     assert_eq!(blocks.len(), 5, "{}", out.stdout);
     for b in &blocks {
         assert_eq!(&b[6..], ["rate", "16000", "bits", "16", "ch", "2", "size", "1024", "id", "mic"], "{b:?}");
@@ -649,9 +649,15 @@ fn stereo_test_wav(seconds: u32) -> (Vec<u8>, Vec<u8>) {
     wav.extend_from_slice(b"RIFF");
     wav.extend_from_slice(&(36 + pcm.len() as u32).to_le_bytes());
     wav.extend_from_slice(b"WAVEfmt ");
-    for v in [16u32.to_le_bytes().to_vec(), 1u16.to_le_bytes().to_vec(), 2u16.to_le_bytes().to_vec(), rate.to_le_bytes().to_vec(),
-        (rate * 4).to_le_bytes().to_vec(), 4u16.to_le_bytes().to_vec(), 16u16.to_le_bytes().to_vec()]
-    {
+    for v in [
+        16u32.to_le_bytes().to_vec(),
+        1u16.to_le_bytes().to_vec(),
+        2u16.to_le_bytes().to_vec(),
+        rate.to_le_bytes().to_vec(),
+        (rate * 4).to_le_bytes().to_vec(),
+        4u16.to_le_bytes().to_vec(),
+        16u16.to_le_bytes().to_vec(),
+    ] {
         wav.extend_from_slice(&v);
     }
     wav.extend_from_slice(b"data");

@@ -34,10 +34,12 @@ fn osysdebug_lines_appear_when_built_with_openr_debug() {
     let mk = p.dir.path().join("hello/HelloWorld/Makefile");
     let text = fs::read_to_string(&mk).unwrap().replace("#CXXFLAGS+= -DOPENR_DEBUG", "CXXFLAGS+= -DOPENR_DEBUG");
     fs::write(&mk, text).unwrap();
-    let (ok, log) = crate::support::run(std::process::Command::new("make")
-        .arg(format!("OPENRSDK_ROOT={}", crate::support::sdk_root().display()))
-        .args(["clean", "install"])
-        .current_dir(p.dir.path().join("hello")));
+    let (ok, log) = crate::support::run(
+        std::process::Command::new("make")
+            .arg(format!("OPENRSDK_ROOT={}", crate::support::sdk_root().display()))
+            .args(["clean", "install"])
+            .current_dir(p.dir.path().join("hello")),
+    );
     assert!(ok, "{log}");
     let out = run_ms(&p.ms(), &["--for", "1s"]);
     assert_ok(&out);
@@ -264,11 +266,13 @@ fn a_misaligned_access_faults_where_the_robot_would() {
     assert!(out.stderr.contains("crashed with SIGBUS: misaligned access in entry StartEntry"), "{}", out.stderr);
     assert!(out.stderr.contains("for type 'volatile int', which the robot's CPU needs 4-byte aligned, at Crash.cc:"), "{}", out.stderr);
     // Built without the check (OPENR_ALIGNMENT_TRAP=0), the PC does the access.
-    let (ok, log) = crate::support::run(std::process::Command::new("make")
-        .env("OPENR_ALIGNMENT_TRAP", "0")
-        .arg(format!("OPENRSDK_ROOT={}", crate::support::sdk_root().display()))
-        .args(["clean", "install"])
-        .current_dir(p.dir.path().join("crash")));
+    let (ok, log) = crate::support::run(
+        std::process::Command::new("make")
+            .env("OPENR_ALIGNMENT_TRAP", "0")
+            .arg(format!("OPENRSDK_ROOT={}", crate::support::sdk_root().display()))
+            .args(["clean", "install"])
+            .current_dir(p.dir.path().join("crash")),
+    );
     assert!(ok, "{log}");
     let out = commit_fault(&p, 13, &[]);
     assert_eq!(out.code, Some(0), "{}", out.stderr);
@@ -343,10 +347,12 @@ fn a_crash_keeps_what_other_objects_printed() {
     let hello = build("hello");
     let mk = hello.dir.path().join("hello/HelloWorld/Makefile");
     fs::write(&mk, fs::read_to_string(&mk).unwrap().replace("#CXXFLAGS+= -DOPENR_DEBUG", "CXXFLAGS+= -DOPENR_DEBUG")).unwrap();
-    let (ok, log) = crate::support::run(std::process::Command::new("make")
-        .arg(format!("OPENRSDK_ROOT={}", crate::support::sdk_root().display()))
-        .args(["clean", "install"])
-        .current_dir(hello.dir.path().join("hello")));
+    let (ok, log) = crate::support::run(
+        std::process::Command::new("make")
+            .arg(format!("OPENRSDK_ROOT={}", crate::support::sdk_root().display()))
+            .args(["clean", "install"])
+            .current_dir(hello.dir.path().join("hello")),
+    );
     assert!(ok, "{log}");
     let p = build("crash");
     fs::copy(hello.ms().join("OPEN-R/MW/OBJS/HELLO.BIN"), p.ms().join("OPEN-R/MW/OBJS/HELLO.BIN")).unwrap();

@@ -68,7 +68,15 @@ fn undefined_behaviour_sanitizer_reports_the_overflow_at_its_line() {
 #[test]
 fn a_makefile_build_takes_the_sanitizer_from_openr_sanitize() {
     let (_tmp, dir) = program();
-    let make = |value: &str| Command::new("make").arg(format!("OPENRSDK_ROOT={}", sdk_root().display())).arg("install").env("OPENR_SANITIZE", value).current_dir(&dir).output().unwrap();
+    let make = |value: &str| {
+        Command::new("make")
+            .arg(format!("OPENRSDK_ROOT={}", sdk_root().display()))
+            .arg("install")
+            .env("OPENR_SANITIZE", value)
+            .current_dir(&dir)
+            .output()
+            .unwrap()
+    };
     let bad = make("memory");
     assert_ne!(bad.status.code(), Some(0));
     assert!(text(&bad).contains("OPENR_SANITIZE=memory: expected address, undefined or thread"), "{}", text(&bad));

@@ -6,15 +6,28 @@ use crate::support::{cargo_openr, sdk_root};
 #[test]
 fn sdk_root_has_every_tool_header_and_library() {
     let root = sdk_root();
-    for tool in ["bin/mipsel-linux-g++", "bin/mipsel-linux-gcc", "bin/mipsel-linux-ld", "bin/mipsel-linux-strip",
-        "bin/mipsel-linux-ar", "bin/mipsel-linux-ranlib", "OPEN_R/bin/stubgen2", "OPEN_R/bin/mkbin", "OPEN_R/bin/gzcp"]
-    {
+    for tool in [
+        "bin/mipsel-linux-g++",
+        "bin/mipsel-linux-gcc",
+        "bin/mipsel-linux-ld",
+        "bin/mipsel-linux-strip",
+        "bin/mipsel-linux-ar",
+        "bin/mipsel-linux-ranlib",
+        "OPEN_R/bin/stubgen2",
+        "OPEN_R/bin/mkbin",
+        "OPEN_R/bin/gzcp",
+    ] {
         let meta = fs::metadata(root.join(tool)).unwrap_or_else(|e| panic!("{tool}: {e}"));
         assert!(meta.is_file(), "{tool} resolves to a file");
     }
-    for header in ["OPEN_R/include/OPENR/OObject.h", "OPEN_R/include/OPENR/stub_macro.h", "OPEN_R/include/MCOOP.h",
-        "OPEN_R/include/apsys.h", "OPEN_R/include/dirent.h", "OPEN_R/include/iostream.h"]
-    {
+    for header in [
+        "OPEN_R/include/OPENR/OObject.h",
+        "OPEN_R/include/OPENR/stub_macro.h",
+        "OPEN_R/include/MCOOP.h",
+        "OPEN_R/include/apsys.h",
+        "OPEN_R/include/dirent.h",
+        "OPEN_R/include/iostream.h",
+    ] {
         assert!(root.join(header).is_file(), "{header} missing");
     }
     for lib in ["OPENR", "ObjectComm", "Internet", "antMCOOP", "ERA201D1", "mcoopstub"] {
@@ -51,11 +64,7 @@ fn refuses_a_directory_that_is_not_an_sdk_root() {
 #[test]
 fn default_prefix_follows_xdg_data_home() {
     let home = tempfile::tempdir().unwrap();
-    let out = std::process::Command::new(crate::support::exe())
-        .arg("sdk")
-        .env("XDG_DATA_HOME", home.path())
-        .output()
-        .unwrap();
+    let out = std::process::Command::new(crate::support::exe()).arg("sdk").env("XDG_DATA_HOME", home.path()).output().unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let expected = home.path().join("cargo-openr/OPEN_R_SDK");
     assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), expected.to_str().unwrap());

@@ -68,11 +68,7 @@ pub fn make_install(name: &str, extra: &[&str]) -> (Built, bool, String) {
     let tmp = tempfile::tempdir().unwrap();
     let dir = tmp.path().join(name);
     copy_tree(&repo().join("testdata/programs").join(name), &dir);
-    let (ok, log) = run(Command::new("make")
-        .arg(format!("OPENRSDK_ROOT={}", root.display()))
-        .args(extra)
-        .arg("install")
-        .current_dir(&dir));
+    let (ok, log) = run(Command::new("make").arg(format!("OPENRSDK_ROOT={}", root.display())).args(extra).arg("install").current_dir(&dir));
     (Built { dir: tmp, name: name.to_string() }, ok, log)
 }
 
@@ -119,8 +115,16 @@ pub fn run_ms_signalled(ms: &Path, args: &[&str], signals: &[(std::time::Duratio
         .unwrap();
     let mut out_pipe = child.stdout.take().unwrap();
     let mut err_pipe = child.stderr.take().unwrap();
-    let out_t = std::thread::spawn(move || { let mut s = Vec::new(); let _ = out_pipe.read_to_end(&mut s); s });
-    let err_t = std::thread::spawn(move || { let mut s = Vec::new(); let _ = err_pipe.read_to_end(&mut s); s });
+    let out_t = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        let _ = out_pipe.read_to_end(&mut s);
+        s
+    });
+    let err_t = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        let _ = err_pipe.read_to_end(&mut s);
+        s
+    });
     let start = Instant::now();
     let mut pending: Vec<(Duration, i32)> = signals.to_vec();
     let status = loop {
@@ -186,8 +190,16 @@ pub fn run_ms_with_stdin(ms: &Path, args: &[&str], input: &[(std::time::Duration
     });
     let mut out_pipe = child.stdout.take().unwrap();
     let mut err_pipe = child.stderr.take().unwrap();
-    let out_t = std::thread::spawn(move || { let mut s = Vec::new(); let _ = out_pipe.read_to_end(&mut s); s });
-    let err_t = std::thread::spawn(move || { let mut s = Vec::new(); let _ = err_pipe.read_to_end(&mut s); s });
+    let out_t = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        let _ = out_pipe.read_to_end(&mut s);
+        s
+    });
+    let err_t = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        let _ = err_pipe.read_to_end(&mut s);
+        s
+    });
     let status = loop {
         if let Some(st) = child.try_wait().unwrap() {
             break st;
@@ -209,10 +221,7 @@ pub fn run_ms_with_stdin(ms: &Path, args: &[&str], input: &[(std::time::Duration
 /// The records of a `--trace` file (JSON lines), in order.
 pub fn read_trace(path: &Path) -> Vec<serde_json::Value> {
     let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("cannot read trace {}: {e}", path.display()));
-    text.lines()
-        .filter(|l| !l.trim().is_empty())
-        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("bad trace line {l:?}: {e}")))
-        .collect()
+    text.lines().filter(|l| !l.trim().is_empty()).map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("bad trace line {l:?}: {e}"))).collect()
 }
 
 /// A `cargo openr run` that keeps running while the test talks to it (over the network
@@ -243,10 +252,8 @@ pub fn spawn_ms(ms: &Path, args: &[&str], env: &[(&str, &str)]) -> Running {
     let stdout = Arc::new(Mutex::new(String::new()));
     let stderr = Arc::new(Mutex::new(String::new()));
     let mut readers = Vec::new();
-    let pipes: [(Box<dyn Read + Send>, Arc<Mutex<String>>); 2] = [
-        (Box::new(child.stdout.take().unwrap()), stdout.clone()),
-        (Box::new(child.stderr.take().unwrap()), stderr.clone()),
-    ];
+    let pipes: [(Box<dyn Read + Send>, Arc<Mutex<String>>); 2] =
+        [(Box::new(child.stdout.take().unwrap()), stdout.clone()), (Box::new(child.stderr.take().unwrap()), stderr.clone())];
     for (mut pipe, sink) in pipes {
         readers.push(std::thread::spawn(move || {
             let mut buf = [0u8; 4096];

@@ -65,11 +65,7 @@ fn openr_wrappers_missing(path: &Path, names: &[&str]) -> Vec<String> {
     use object::{Object, ObjectSymbol};
     let data = fs::read(path).unwrap();
     let file = object::File::parse(&*data).unwrap();
-    names
-        .iter()
-        .filter(|n| !file.dynamic_symbols().any(|s| s.is_definition() && s.name() == Ok(**n)))
-        .map(|n| n.to_string())
-        .collect()
+    names.iter().filter(|n| !file.dynamic_symbols().any(|s| s.is_definition() && s.name() == Ok(**n))).map(|n| n.to_string()).collect()
 }
 
 #[test]
@@ -185,7 +181,11 @@ fn compiler_wrapper_explains_what_only_gcc_3_3_accepted() {
     let dir = tempfile::tempdir().unwrap();
     // With an error of no legacy class beside them (line 7) the legacy repair gives up,
     // and the notes say what to change.
-    fs::write(dir.path().join("Old.cc"), "struct A { void m(int a, int a); };\nint g()\n{\n    for (int i = 0; i < 3; i++) {}\n    return i;\n}\nint h() { return 1 +; }\n").unwrap();
+    fs::write(
+        dir.path().join("Old.cc"),
+        "struct A { void m(int a, int a); };\nint g()\n{\n    for (int i = 0; i < 3; i++) {}\n    return i;\n}\nint h() { return 1 +; }\n",
+    )
+    .unwrap();
     let (ok, log) = run(Command::new(tool("bin/mipsel-linux-g++")).args(["-c", "Old.cc"]).current_dir(dir.path()));
     assert!(!ok);
     assert!(log.contains("Old.cc:1:") && log.contains("note: [cargo-openr] gcc 3.3 accepted the same parameter name twice"), "{log}");
@@ -196,17 +196,10 @@ fn compiler_wrapper_explains_what_only_gcc_3_3_accepted() {
 fn a_missing_host_compiler_is_named_with_where_it_was_looked_for() {
     let dir = tempfile::tempdir().unwrap();
     fs::write(dir.path().join("a.cc"), "int f() { return 1; }\n").unwrap();
-    let out = Command::new(tool("bin/mipsel-linux-g++"))
-        .args(["-c", "a.cc"])
-        .env("OPENR_HOST_CXX", "nonexistent-gxx")
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
+    let out =
+        Command::new(tool("bin/mipsel-linux-g++")).args(["-c", "a.cc"]).env("OPENR_HOST_CXX", "nonexistent-gxx").current_dir(dir.path()).output().unwrap();
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.contains("host tool `nonexistent-gxx` (named by OPENR_HOST_CXX) not found; install it with `apt-get install g++`"),
-        "{err}"
-    );
+    assert!(err.contains("host tool `nonexistent-gxx` (named by OPENR_HOST_CXX) not found; install it with `apt-get install g++`"), "{err}");
     assert!(!dir.path().join("a.o").exists());
 }

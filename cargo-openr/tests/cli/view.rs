@@ -64,7 +64,8 @@ pub(crate) fn chromium(url: &str, screenshot: Option<&Path>) -> String {
 pub(crate) fn chromium_with(url: &str, screenshot: Option<&Path>, extra: &[&str]) -> String {
     let profile = tempfile::tempdir().unwrap();
     let mut cmd = Command::new("chromium");
-    cmd.args(["--headless", "--disable-gpu", "--no-sandbox", "--no-first-run", "--hide-scrollbars"]).arg(format!("--user-data-dir={}", profile.path().display()));
+    cmd.args(["--headless", "--disable-gpu", "--no-sandbox", "--no-first-run", "--hide-scrollbars"])
+        .arg(format!("--user-data-dir={}", profile.path().display()));
     match screenshot {
         Some(p) => cmd.arg("--window-size=1100,820").arg(format!("--screenshot={}", p.display())),
         None => cmd.arg("--dump-dom"),

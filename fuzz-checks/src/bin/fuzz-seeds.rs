@@ -8,9 +8,8 @@ fn main() {
     for t in openr_fuzz_checks::TARGETS {
         let d = std::path::Path::new(&dir).join(t.name);
         let seeds = openr_fuzz_checks::seeds(t.name);
-        let written = std::fs::create_dir_all(&d).and_then(|()| {
-            seeds.iter().enumerate().try_for_each(|(i, s)| std::fs::write(d.join(format!("seed-{i:04}")), s))
-        });
+        let written =
+            std::fs::create_dir_all(&d).and_then(|()| seeds.iter().enumerate().try_for_each(|(i, s)| std::fs::write(d.join(format!("seed-{i:04}")), s)));
         if let Err(e) = written {
             eprintln!("fuzz-seeds: {}: {e}", d.display());
             std::process::exit(1);

@@ -440,7 +440,6 @@ fn render_time() {
     assert_eq!(out.len(), r.image_layout().size());
 }
 
-
 #[test]
 fn camera_parameters_change_the_image() {
     let mean_y = |r: &mut VirtualRobot| {

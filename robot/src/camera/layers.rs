@@ -1,9 +1,9 @@
 //! Synthesis of the four `OFbkImageVectorData` layers (H, M, L and the CDT layer C) from a
 //! sensor-resolution RGB image, and their reconstruction to RGB (robot-api 6.6).
-use crate::image::{ImageLayout, LayerLayout, TAG_SIZE};
 use super::cdt::{CdtLut, CDT_CHANNELS};
 use super::colour::{clip, luma, ycrcb_to_rgb};
 use super::source::RgbImage;
+use crate::image::{ImageLayout, LayerLayout, TAG_SIZE};
 
 // The loops below are shaped for the auto-vectoriser (~0.1 ms per ERS-7 image in
 // release on x86-64, against ~0.6 ms for a per-pixel loop over the formulas): rows

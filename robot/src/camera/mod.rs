@@ -27,10 +27,10 @@
 
 mod cdt;
 mod colour;
-mod layers;
-mod source;
 #[cfg(test)]
 mod end_to_end;
+mod layers;
+mod source;
 
 pub use cdt::*;
 pub use colour::*;

@@ -19,10 +19,7 @@ pub fn command_vector_init(buf: &mut [u8], n: usize) -> Result<()> {
     for i in 0..n {
         let o = HEADER_SIZE + COMMAND_INFO_SIZE * i;
         let data = HEADER_SIZE + COMMAND_INFO_SIZE * n + COMMAND_DATA_SIZE * i;
-        for (k, v) in [0, 0xFFFF_FFFF, FRAME_INVALID, 0, COMMAND_FRAME_SIZE as u32, data as u32, COMMAND_DATA_SIZE as u32, 0]
-            .into_iter()
-            .enumerate()
-        {
+        for (k, v) in [0, 0xFFFF_FFFF, FRAME_INVALID, 0, COMMAND_FRAME_SIZE as u32, data as u32, COMMAND_DATA_SIZE as u32, 0].into_iter().enumerate() {
             wr_u32(buf, o + 4 * k, v)?;
         }
     }
@@ -193,9 +190,8 @@ pub fn parse_command_vector(buf: &[u8]) -> Result<CommandVector> {
         }
         let base = data_offset as usize;
         let frames = (0..num_frames as usize).map(|k| base + COMMAND_FRAME_SIZE * k);
-        let held32 = |buf: &[u8]| -> Result<Vec<Held<u32>>> {
-            frames.clone().map(|f| Ok(Held { value: rd_u32(buf, f)?, period: rd_u16(buf, f + 4)? })).collect()
-        };
+        let held32 =
+            |buf: &[u8]| -> Result<Vec<Held<u32>>> { frames.clone().map(|f| Ok(Held { value: rd_u32(buf, f)?, period: rd_u16(buf, f + 4)? })).collect() };
         let values = match data_type {
             odata::JOINT_COMMAND2 => CommandValues::Joint2(frames.clone().map(|f| rd_u32(buf, f).map(|v| v as i32)).collect::<Result<_>>()?),
             odata::JOINT_COMMAND3 => CommandValues::Joint3(frames.clone().map(|f| rd_u32(buf, f)).collect::<Result<_>>()?),
@@ -205,12 +201,7 @@ pub fn parse_command_vector(buf: &[u8]) -> Result<CommandVector> {
             odata::LED_COMMAND3 => CommandValues::Led3(
                 frames
                     .clone()
-                    .map(|f| {
-                        Ok(Held {
-                            value: Led3Value { intensity: rd_u16(buf, f)? as i16, mode: rd_u16(buf, f + 2)? },
-                            period: rd_u16(buf, f + 4)?,
-                        })
-                    })
+                    .map(|f| Ok(Held { value: Led3Value { intensity: rd_u16(buf, f)? as i16, mode: rd_u16(buf, f + 2)? }, period: rd_u16(buf, f + 4)? }))
                     .collect::<Result<_>>()?,
             ),
             other => CommandValues::Unsupported(other),

@@ -108,7 +108,6 @@ impl std::error::Error for VectorError {}
 
 pub type Result<T> = std::result::Result<T, VectorError>;
 
-
 // ---------------------------------------------------------------------------------
 // byte helpers
 

@@ -59,10 +59,12 @@ pub fn warm_up() {
     let mut n = 0;
     // SAFETY: the crate's lock is skipped (a handler must not block on it); the walk itself is
     // libgcc's `_Unwind_Backtrace`, safe to run on several threads at once.
-    unsafe { backtrace::trace_unsynchronized(|_| {
-        n += 1;
-        n < 4
-    }) };
+    unsafe {
+        backtrace::trace_unsynchronized(|_| {
+            n += 1;
+            n < 4
+        })
+    };
 }
 
 /// The return addresses of the current stack, from the faulting instruction `pc` on

@@ -35,10 +35,8 @@ pub(super) unsafe fn opened(dir: *mut libc::c_void, ms_path: *const c_char, host
     let (Ok(ms_path), Ok(host)) = (ms_path.to_str(), host.to_str()) else { return };
     let Some(lower) = rt.ms.lower_dir(&super::as_ms_path(rt, ms_path).unwrap_or_else(|| ms_path.to_string())) else { return };
     let own: Vec<String> = names_in(std::path::Path::new(host)).map(|(n, _)| n).collect();
-    let names: Vec<(CString, u8)> = names_in(&lower)
-        .filter(|(n, _)| !own.iter().any(|o| o.eq_ignore_ascii_case(n)))
-        .filter_map(|(n, t)| Some((CString::new(n).ok()?, t)))
-        .collect();
+    let names: Vec<(CString, u8)> =
+        names_in(&lower).filter(|(n, _)| !own.iter().any(|o| o.eq_ignore_ascii_case(n))).filter_map(|(n, t)| Some((CString::new(n).ok()?, t))).collect();
     if !names.is_empty() {
         // SAFETY: a plain C struct; all zero is a valid value.
         let ent = Box::new(unsafe { std::mem::zeroed::<libc::dirent64>() });

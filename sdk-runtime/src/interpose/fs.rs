@@ -387,7 +387,9 @@ unsafe extern "C" fn scandir64(path: C, list: P, filter: usize, compar: usize, _
 }
 unsafe extern "C" fn scandirat(fd: c_int, path: C, list: P, filter: usize, compar: usize, caller: usize) -> c_int {
     // SAFETY: the caller's arguments for glibc's `scandirat`, passed on with the path mapped.
-    unsafe { with_at(caller, fd, path, Access::Read, false, -1, |p| call!("scandirat", -1, fn(c_int, C, P, usize, usize) -> c_int, fd, p, list, filter, compar)) }
+    unsafe {
+        with_at(caller, fd, path, Access::Read, false, -1, |p| call!("scandirat", -1, fn(c_int, C, P, usize, usize) -> c_int, fd, p, list, filter, compar))
+    }
 }
 unsafe extern "C" fn mkdir(path: C, mode: c_uint, _: usize, _: usize, _: usize, caller: usize) -> c_int {
     // SAFETY: the caller's arguments for glibc's `mkdir`, passed on with the path mapped.
@@ -523,7 +525,9 @@ unsafe extern "C" fn lchown(path: C, uid: c_uint, gid: c_uint, _: usize, _: usiz
 unsafe extern "C" fn fchownat(fd: c_int, path: C, uid: c_uint, gid: c_uint, flags: c_int, caller: usize) -> c_int {
     let empty = flags & libc::AT_EMPTY_PATH != 0;
     // SAFETY: the caller's arguments for glibc's `fchownat`, passed on with the path mapped.
-    unsafe { with_at(caller, fd, path, Access::Write, empty, -1, |p| call!("fchownat", -1, fn(c_int, C, c_uint, c_uint, c_int) -> c_int, fd, p, uid, gid, flags)) }
+    unsafe {
+        with_at(caller, fd, path, Access::Write, empty, -1, |p| call!("fchownat", -1, fn(c_int, C, c_uint, c_uint, c_int) -> c_int, fd, p, uid, gid, flags))
+    }
 }
 unsafe extern "C" fn utime(path: C, times: P, _: usize, _: usize, _: usize, caller: usize) -> c_int {
     // SAFETY: the caller's arguments for glibc's `utime`, passed on with the path mapped.

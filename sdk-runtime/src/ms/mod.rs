@@ -227,9 +227,7 @@ impl MsDir {
 
 /// The program's names where it has the component, else the base tree's, else `upper`.
 fn merged(own: &Walk, base: &Walk, upper: &[OsString]) -> Vec<OsString> {
-    (0..upper.len())
-        .map(|i| own.names.get(i).or_else(|| base.names.get(i)).unwrap_or(&upper[i]).clone())
-        .collect()
+    (0..upper.len()).map(|i| own.names.get(i).or_else(|| base.names.get(i)).unwrap_or(&upper[i]).clone()).collect()
 }
 
 fn check_new_name(name: &str) -> Result<(), Refusal> {

@@ -34,20 +34,12 @@ pub(super) fn find_entry(dir: &Path, name: &str) -> Option<OsString> {
     if exact.symlink_metadata().is_ok() {
         return Some(name.into());
     }
-    std::fs::read_dir(dir)
-        .ok()?
-        .flatten()
-        .map(|e| e.file_name())
-        .find(|n| n.to_string_lossy().eq_ignore_ascii_case(name))
+    std::fs::read_dir(dir).ok()?.flatten().map(|e| e.file_name()).find(|n| n.to_string_lossy().eq_ignore_ascii_case(name))
 }
 
 /// FAT 8.3: base ≤ 8, optional extension ≤ 3, allowed characters only.
 pub fn is_eight_dot_three(name: &str) -> bool {
     let ok_char = |c: char| c.is_ascii_alphanumeric() || "$&#{}~%'()-@^`!_".contains(c);
     let (base, ext) = name.split_once('.').unwrap_or((name, ""));
-    (1..=8).contains(&base.len())
-        && ext.len() <= 3
-        && !(name.contains('.') && ext.is_empty())
-        && base.chars().all(ok_char)
-        && ext.chars().all(ok_char)
+    (1..=8).contains(&base.len()) && ext.len() <= 3 && !(name.contains('.') && ext.is_empty()) && base.chars().all(ok_char) && ext.chars().all(ok_char)
 }

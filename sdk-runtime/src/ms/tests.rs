@@ -66,7 +66,8 @@ fn links_out_of_the_stick_are_refused_for_new_names_too() {
     symlink("/nonexistent/dir", d.path().join("DANGLING")).unwrap();
     symlink(outside.path().join("NEW.TXT"), d.path().join("NEWLINK.TXT")).unwrap();
     for access in [Access::Read, Access::Write, Access::Remove] {
-        for p in ["/MS/OUTDIR/OLD.TXT", "/MS/OUTDIR/NEW.TXT", "/MS/outdir/sub/NEW.TXT", "/MS/DANGLING/NEW.TXT", "/MS/DANGLING", "/MS/NEWLINK.TXT", "/MS/OUTDIR"] {
+        for p in ["/MS/OUTDIR/OLD.TXT", "/MS/OUTDIR/NEW.TXT", "/MS/outdir/sub/NEW.TXT", "/MS/DANGLING/NEW.TXT", "/MS/DANGLING", "/MS/NEWLINK.TXT", "/MS/OUTDIR"]
+        {
             assert_eq!(ms.resolve(p, access), Err(Refusal::Escapes), "{p} {access:?}");
         }
     }

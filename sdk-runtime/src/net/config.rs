@@ -131,7 +131,11 @@ impl NetConfig {
     /// Host address and port of a destination the robot names: the `--net-map` entry
     /// for it (a port-specific one first), then the loopback port remap.
     pub fn remote(&self, addr: u32, port: u16, what: &'static str) -> (u32, u16) {
-        let entry = self.addr_map.iter().find(|m| m.robot == addr && m.robot_port == Some(port)).or_else(|| self.addr_map.iter().find(|m| m.robot == addr && m.robot_port.is_none()));
+        let entry = self
+            .addr_map
+            .iter()
+            .find(|m| m.robot == addr && m.robot_port == Some(port))
+            .or_else(|| self.addr_map.iter().find(|m| m.robot == addr && m.robot_port.is_none()));
         match entry {
             Some(m) => match m.host_port {
                 Some(hp) => (m.host, hp),

@@ -2,7 +2,7 @@
 //! creation, the robot's settings registry, the entry point of every request, and the poll
 //! thread that finishes what would block.
 use std::collections::{BTreeMap, HashMap};
-use std::os::fd::{AsRawFd};
+use std::os::fd::AsRawFd;
 use std::time::{Duration, Instant};
 
 use super::codes::{ant, op, tcp, PROTO_DNS, PROTO_ENV, PROTO_INIT, PROTO_TCP, PROTO_UDP};

@@ -155,7 +155,9 @@ pub unsafe fn sendto(fd: RawFd, buf: *const u8, len: usize, to: Option<(u32, u16
         Some((a, p)) => {
             let sa = sockaddr(a, p);
             // SAFETY: as recv; `sa` valid.
-            unsafe { libc::sendto(fd, buf.cast(), len, libc::MSG_NOSIGNAL, (&sa as *const libc::sockaddr_in).cast(), std::mem::size_of::<libc::sockaddr_in>() as u32) }
+            unsafe {
+                libc::sendto(fd, buf.cast(), len, libc::MSG_NOSIGNAL, (&sa as *const libc::sockaddr_in).cast(), std::mem::size_of::<libc::sockaddr_in>() as u32)
+            }
         }
         // SAFETY: as recv.
         None => unsafe { libc::send(fd, buf.cast(), len, libc::MSG_NOSIGNAL) },

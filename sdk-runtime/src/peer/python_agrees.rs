@@ -114,10 +114,7 @@ fn python_table() -> BTreeMap<String, String> {
 /// What differs between two tables, one line per key.
 fn differences(rust: &BTreeMap<String, String>, python: &BTreeMap<String, String>) -> Vec<String> {
     let keys: std::collections::BTreeSet<&String> = rust.keys().chain(python.keys()).collect();
-    keys.into_iter()
-        .filter(|k| rust.get(*k) != python.get(*k))
-        .map(|k| format!("{k}: Rust {:?}, Python {:?}", rust.get(k), python.get(k)))
-        .collect()
+    keys.into_iter().filter(|k| rust.get(*k) != python.get(*k)).map(|k| format!("{k}: Rust {:?}, Python {:?}", rust.get(k), python.get(k))).collect()
 }
 
 #[test]

@@ -191,9 +191,11 @@ impl<'a> In<'a> {
         In { b, pos: 0 }
     }
     pub fn take(&mut self, n: usize) -> Result<&'a [u8], String> {
-        let end = self.pos.checked_add(n).filter(|&e| e <= self.b.len()).ok_or_else(|| {
-            format!("payload truncated: {} more byte(s) needed at offset {}, {} present", n, self.pos, self.b.len())
-        })?;
+        let end = self
+            .pos
+            .checked_add(n)
+            .filter(|&e| e <= self.b.len())
+            .ok_or_else(|| format!("payload truncated: {} more byte(s) needed at offset {}, {} present", n, self.pos, self.b.len()))?;
         let s = &self.b[self.pos..end];
         self.pos = end;
         Ok(s)

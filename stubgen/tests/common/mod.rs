@@ -7,9 +7,7 @@ use std::path::{Path, PathBuf};
 use stubgen::StubCfg;
 
 pub fn good(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../testdata/stubcfg/good")
-        .join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../testdata/stubcfg/good").join(name)
 }
 
 /// Parse a good fixture and generate its files: (cfg, file name -> contents).
@@ -22,26 +20,17 @@ pub fn generate_fixture(name: &str) -> (StubCfg, BTreeMap<String, String>) {
 /// The rows `{selector, (::Entry)::name}` of the `__GNUC__` ObjectEntryTable, without the
 /// terminator.
 pub fn gnuc_table(stub_cc: &str) -> Vec<(u64, String)> {
-    let gnuc = &stub_cc[stub_cc
-        .find("#if defined(__GNUC__)\n\n")
-        .expect("GNUC branch")..];
+    let gnuc = &stub_cc[stub_cc.find("#if defined(__GNUC__)\n\n").expect("GNUC branch")..];
     let gnuc = &gnuc[..gnuc.find("#else").expect("#else")];
-    let table = &gnuc[gnuc
-        .find("ObjectEntry ObjectEntryTable[] = {")
-        .expect("table")..];
+    let table = &gnuc[gnuc.find("ObjectEntry ObjectEntryTable[] = {").expect("table")..];
     let mut rows = Vec::new();
     for line in table.lines().skip(1) {
         let line = line.trim();
         if line == "{::UNDEF, ENTRY_UNDEF}" {
             return rows;
         }
-        let inner = line
-            .strip_prefix('{')
-            .and_then(|l| l.strip_suffix("},"))
-            .unwrap_or_else(|| panic!("row {line:?}"));
-        let (sel, entry) = inner
-            .split_once(", (::Entry)::")
-            .unwrap_or_else(|| panic!("row {line:?}"));
+        let inner = line.strip_prefix('{').and_then(|l| l.strip_suffix("},")).unwrap_or_else(|| panic!("row {line:?}"));
+        let (sel, entry) = inner.split_once(", (::Entry)::").unwrap_or_else(|| panic!("row {line:?}"));
         rows.push((sel.parse().unwrap(), entry.to_owned()));
     }
     panic!("no terminator in\n{table}");

@@ -102,11 +102,7 @@ fn parse_fixit(s: &str) -> Option<FixIt> {
     };
     let ((l1, c1), (l2, c2)) = (pos(a)?, pos(b)?);
     let (text, _) = quoted(rest)?;
-    Some(FixIt {
-        from: Loc { file: file.clone(), line: l1, col: c1 },
-        to: Loc { file, line: l2, col: c2 },
-        text,
-    })
+    Some(FixIt { from: Loc { file: file.clone(), line: l1, col: c1 }, to: Loc { file, line: l2, col: c2 }, text })
 }
 
 /// A C-escaped string literal at the start of `s` (gcc escapes `\`, `"` and

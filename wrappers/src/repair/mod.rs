@@ -127,12 +127,7 @@ fn choose(errors: &[diag::Diag], shadow: &Shadow, moves: &Moves, notes: &mut Not
 
 /// The real compile of the repaired shadow unit (stdout is the user's).
 fn finish(exe: &Path, host: &[&str], args: &[OsString], unit: usize, shadow: &Shadow, mut notes: Notes) -> Option<Repaired> {
-    let out = Command::new(exe)
-        .args(host)
-        .args(args::final_compile(args, unit, &shadow.files[0].path))
-        .stderr(Stdio::piped())
-        .output()
-        .ok()?;
+    let out = Command::new(exe).args(host).args(args::final_compile(args, unit, &shadow.files[0].path)).stderr(Stdio::piped()).output().ok()?;
     if !out.status.success() {
         return None;
     }

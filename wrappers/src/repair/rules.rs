@@ -37,7 +37,9 @@ impl Class {
             Class::ImplicitTypename => "implicit typename (a dependent type without `typename`; an error since gcc 3.4)",
             Class::DependentBase => "a name from a dependent base class (found by gcc 3.3; not by the two-phase lookup of gcc 3.4)",
             Class::ForScope => "old for-scope (a `for` variable used after its loop; `-fno-for-scope` is gone since gcc 9)",
-            Class::FriendInjection => "friend injection (a function declared only as a friend; not visible since gcc 4.1, `-ffriend-injection` gone since gcc 9)",
+            Class::FriendInjection => {
+                "friend injection (a function declared only as a friend; not visible since gcc 4.1, `-ffriend-injection` gone since gcc 9)"
+            }
             Class::ExplicitSpecialization => "explicit specialization without `template <>` (accepted by gcc 3.3)",
             Class::DuplicateParameter => "a parameter name repeated in one declaration (accepted by gcc 3.3)",
             Class::GlobalQualifiedDeclaration => "a first declaration with a qualified name `::f` (accepted by gcc 3.3)",
@@ -87,7 +89,8 @@ pub(crate) fn repair(d: &Diag, shadow: &Shadow) -> Option<Repair> {
     let at = src.offset(d.loc.line, d.loc.col)?;
     let m = d.msg.replace(['\u{2018}', '\u{2019}'], "'");
     let names = quoted_names(&d.msg);
-    let insert = |class, text: &str, pos: usize, how: String| Some(Repair { class, how, edits: vec![Edit { file, from: pos, to: pos, text: text.to_string() }] });
+    let insert =
+        |class, text: &str, pos: usize, how: String| Some(Repair { class, how, edits: vec![Edit { file, from: pos, to: pos, text: text.to_string() }] });
     if m.contains("need 'typename' before") {
         if src.ident_at(at) == "typename" {
             return None;
@@ -114,9 +117,7 @@ pub(crate) fn repair(d: &Diag, shadow: &Shadow) -> Option<Repair> {
         if src.ident_at(at) != name {
             return None;
         }
-        return for_scope(src, file, at, name)
-            .or_else(|| friend_injection(shadow, file, at, name))
-            .or_else(|| dependent_base_name(src, file, at, name));
+        return for_scope(src, file, at, name).or_else(|| friend_injection(shadow, file, at, name)).or_else(|| dependent_base_name(src, file, at, name));
     }
     if m.contains("explicit specialization must be preceded by") {
         return fixits(d, shadow, Class::ExplicitSpecialization, "with `template <>` added".into());
@@ -258,11 +259,9 @@ fn top_level(code: &[u8], from: usize, to: usize, byte: u8) -> Option<usize> {
 /// The start of the last whole word `word` in `code[from..to]`.
 fn find_word_before(code: &[u8], word: &str, from: usize, to: usize) -> Option<usize> {
     let w = word.as_bytes();
-    (from..to.saturating_sub(w.len() - 1)).rev().find(|&i| {
-        code[i..].starts_with(w)
-            && (i == 0 || !is_ident(code[i - 1]))
-            && code.get(i + w.len()).is_none_or(|&b| !is_ident(b))
-    })
+    (from..to.saturating_sub(w.len() - 1))
+        .rev()
+        .find(|&i| code[i..].starts_with(w) && (i == 0 || !is_ident(code[i - 1])) && code.get(i + w.len()).is_none_or(|&b| !is_ident(b)))
 }
 
 /// Every whole-word `word` in `code`.
@@ -426,7 +425,11 @@ fn parameter_type(src: &Source, file: usize, at: usize) -> Option<Repair> {
     if !dependent || !matches!(before, Some(b'(' | b',')) || name.is_empty() {
         return None;
     }
-    Some(Repair { class: Class::ImplicitTypename, how: "with `typename` added".into(), edits: vec![Edit { file, from: start, to: start, text: "typename ".into() }] })
+    Some(Repair {
+        class: Class::ImplicitTypename,
+        how: "with `typename` added".into(),
+        edits: vec![Edit { file, from: start, to: start, text: "typename ".into() }],
+    })
 }
 
 /// `void f(double* d, double* d)`: the second `d` is renamed.

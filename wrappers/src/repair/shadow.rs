@@ -96,9 +96,7 @@ impl Shadow {
     /// shadows under `dir` (the main file as `dir/u/<its file name>`). `None` if the main
     /// file cannot be read.
     pub fn new(graph: &[Node], cwd: &Path, sdk_root: Option<&Path>, dir: &Path) -> Option<Shadow> {
-        let user = |n: &Node| {
-            !n.system && !sdk_root.is_some_and(|r| cwd.join(&n.name).canonicalize().is_ok_and(|p| p.starts_with(r)))
-        };
+        let user = |n: &Node| !n.system && !sdk_root.is_some_and(|r| cwd.join(&n.name).canonicalize().is_ok_and(|p| p.starts_with(r)));
         let mut slot: Vec<Option<usize>> = vec![None; graph.len()];
         let mut files = Vec::new();
         let mut todo = vec![0];
@@ -168,8 +166,7 @@ impl Shadow {
                     continue;
                 }
                 let Some(target) = quoted_include(line) else { continue };
-                let hits: Vec<&(String, PathBuf)> =
-                    names.iter().filter(|(name, _)| name == target || name.ends_with(&format!("/{target}"))).collect();
+                let hits: Vec<&(String, PathBuf)> = names.iter().filter(|(name, _)| name == target || name.ends_with(&format!("/{target}"))).collect();
                 if let [(_, path)] = hits[..] {
                     f.includes.push((line_no, path.clone()));
                 }
@@ -228,10 +225,7 @@ mod tests {
         let cwd = dir.path();
         std::fs::write(cwd.join("u.cc"), "// unit\n#include \"a.h\"\n#include \"a.h\"  // again\nint main() {}\n").unwrap();
         std::fs::write(cwd.join("a.h"), "#pragma once\nint a;\n").unwrap();
-        let graph = vec![
-            Node { name: "u.cc".into(), system: false, includes: vec![(2, 1)] },
-            Node { name: "a.h".into(), system: false, includes: vec![] },
-        ];
+        let graph = vec![Node { name: "u.cc".into(), system: false, includes: vec![(2, 1)] }, Node { name: "a.h".into(), system: false, includes: vec![] }];
         let s = Shadow::new(&graph, cwd, None, &cwd.join("S")).unwrap();
         s.write().unwrap();
         let a = cwd.join("S/h1/a.h");

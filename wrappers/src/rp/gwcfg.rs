@@ -79,7 +79,10 @@ mod tests {
         let v = parse("HOSTGW.CFG", text).unwrap();
         assert_eq!(v[0], GwLine::Proxy { line: 3, port: 59001, addr: Some("10.0.1.100".into()) });
         assert_eq!(v[1], GwLine::Service { line: 4, name: "TCPGateway.Cam.Frame.S".into(), port: 59002, addr: Some("10.0.1.100".into()), options: vec![] });
-        assert_eq!(v[2], GwLine::Service { line: 5, name: "Core.Stdin.Expr.O".into(), port: 1094, addr: None, options: vec!["dmax=8".into(), "dmin=1".into()] });
+        assert_eq!(
+            v[2],
+            GwLine::Service { line: 5, name: "Core.Stdin.Expr.O".into(), port: 1094, addr: None, options: vec!["dmax=8".into(), "dmin=1".into()] }
+        );
     }
 
     #[test]
@@ -92,7 +95,10 @@ mod tests {
     #[test]
     fn bad_lines_name_file_and_line() {
         assert_eq!(parse("H", "\nTCPGateway.X.T.S 70000 1.2.3.4\n").unwrap_err().to_string(), "H:2: `70000` is not a TCP port (1-65535)");
-        assert_eq!(parse("H", "TCPGateway.X.T.Q 5 1.2.3.4\n").unwrap_err().to_string(), "H:1: `TCPGateway.X.T.Q` is not a gateway service `<Object>.<Service>.<DataType>.S|O`");
+        assert_eq!(
+            parse("H", "TCPGateway.X.T.Q 5 1.2.3.4\n").unwrap_err().to_string(),
+            "H:1: `TCPGateway.X.T.Q` is not a gateway service `<Object>.<Service>.<DataType>.S|O`"
+        );
         assert_eq!(parse("H", "!PROXY 5\n").unwrap_err().to_string(), "H:1: expected `!ROBOT_PROXY <port> <address>`, found `!PROXY 5`");
         assert_eq!(parse("H", "TCPGateway.X.T.S\n").unwrap_err().to_string(), "H:1: missing port number");
         assert_eq!(parse("H", "TCPGateway.X.T.S 5 robot\n").unwrap_err().to_string(), "H:1: unexpected field `robot` (expected an IPv4 address or key=value)");

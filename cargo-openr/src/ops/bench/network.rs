@@ -89,7 +89,8 @@ fn ftp_retr(port: u16, pasv_offset: u16, name: &str) -> Result<f64> {
     }
     w.write_all(b"PASV\r\n")?;
     let pasv = reply("227")?;
-    let nums: Vec<u16> = pasv.rsplit(' ').next().unwrap_or("").trim().trim_matches(|c| c == '(' || c == ')' || c == '.').split(',').filter_map(|n| n.parse().ok()).collect();
+    let nums: Vec<u16> =
+        pasv.rsplit(' ').next().unwrap_or("").trim().trim_matches(|c| c == '(' || c == ')' || c == '.').split(',').filter_map(|n| n.parse().ok()).collect();
     if nums.len() != 6 {
         bail!("bad 227 line {pasv:?}");
     }

@@ -46,12 +46,7 @@ impl Table {
     pub fn push(&mut self, name: &str, value: f64, unit: &'static str, reference: Option<&str>) {
         match self.figures.iter_mut().find(|f| f.name == name) {
             Some(f) => f.values.push(value),
-            None => self.figures.push(Figure {
-                name: name.to_string(),
-                unit,
-                values: vec![value],
-                reference: reference.map(str::to_string),
-            }),
+            None => self.figures.push(Figure { name: name.to_string(), unit, values: vec![value], reference: reference.map(str::to_string) }),
         }
     }
 

@@ -38,11 +38,8 @@ pub(super) fn write(project: &Path, commands: &[serde_json::Value]) -> anyhow::R
 /// The compile command `args` (wrapper first) as the host compiler would run it.
 pub(super) fn host_command(args: &[String], src: &Path) -> anyhow::Result<Vec<String>> {
     let c = src.extension().is_some_and(|e| e == "c");
-    let (name, env, wrapper_flags) = if c {
-        ("gcc", "OPENR_HOST_CC", openr_wrappers::cc_flags())
-    } else {
-        ("g++", "OPENR_HOST_CXX", openr_wrappers::cxx_flags())
-    };
+    let (name, env, wrapper_flags) =
+        if c { ("gcc", "OPENR_HOST_CC", openr_wrappers::cc_flags()) } else { ("g++", "OPENR_HOST_CXX", openr_wrappers::cxx_flags()) };
     let host = openr_wrappers::host_tool(name, &[env]).map_err(|e| anyhow::anyhow!("{e}"))?;
     let mut out = vec![host.display().to_string()];
     out.extend(wrapper_flags.iter().map(|f| f.to_string()));

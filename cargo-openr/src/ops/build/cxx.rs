@@ -139,9 +139,7 @@ pub(super) fn plan<'a>(opts: &BuildOptions, project: &Path, o: &'a Object, comma
     let bin = out.join(format!("{}.bin", ocf.file_stem().unwrap().to_string_lossy()));
     let mut link_inputs = objs.clone();
     link_inputs.push(ocf.clone());
-    work |= !stale_units.is_empty()
-        || stale(&bin, &link_inputs)
-        || fs::read_to_string(link_stamp(&out)).ok().as_deref() != Some(link_line(opts).as_str());
+    work |= !stale_units.is_empty() || stale(&bin, &link_inputs) || fs::read_to_string(link_stamp(&out)).ok().as_deref() != Some(link_line(opts).as_str());
     Ok(Plan { object: o, out, ocf, objs, stale_units, work, stub_warnings })
 }
 

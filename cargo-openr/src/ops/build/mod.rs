@@ -173,11 +173,8 @@ fn rust_object(path: &Path, text: &str) -> anyhow::Result<Option<(String, Option
         let line = e.span().map_or(1, |s| text[..s.start.min(text.len())].matches('\n').count() + 1);
         anyhow::anyhow!("{}:{line}: {}", path.display(), e.message())
     })?;
-    let cdylib = doc
-        .get("lib")
-        .and_then(|l| l.get("crate-type"))
-        .and_then(|t| t.as_array())
-        .is_some_and(|types| types.iter().any(|t| t.as_str() == Some("cdylib")));
+    let cdylib =
+        doc.get("lib").and_then(|l| l.get("crate-type")).and_then(|t| t.as_array()).is_some_and(|types| types.iter().any(|t| t.as_str() == Some("cdylib")));
     let Some(package) = doc.get("package").filter(|_| cdylib) else { return Ok(None) };
     let name = package.get("name").and_then(|n| n.as_str()).unwrap_or("object").to_string();
     let bin = package.get("metadata").and_then(|m| m.get("openr")).and_then(|o| o.get("bin")).and_then(|b| b.as_str()).map(str::to_string);

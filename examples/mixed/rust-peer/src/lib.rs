@@ -11,11 +11,7 @@ struct RustPeer {
 
 impl Object for RustPeer {
     fn init(ctx: &mut Context) -> Self {
-        RustPeer {
-            send: ctx.subject("RustPeer.SendString.char.S"),
-            receive: ctx.observer("RustPeer.ReceiveString.char.O"),
-            sent: 0,
-        }
+        RustPeer { send: ctx.subject("RustPeer.SendString.char.S"), receive: ctx.observer("RustPeer.ReceiveString.char.O"), sent: 0 }
     }
 
     fn ready(&mut self, ctx: &mut Context, event: ReadyEvent) {
