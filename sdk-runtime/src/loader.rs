@@ -40,7 +40,10 @@ const UNDEF: u32 = 0xffff_ffff;
 /// the file and say what it is instead.
 pub fn read_bin(path: &Path) -> Result<Vec<u8>> {
     let raw = std::fs::read(path).map_err(|e| Error::io(path, e))?;
-    let elf = gunzip_if_gzip(raw).map_err(|e| Error::load(path, format!("corrupt gzip data: {e}")))?;
+    let elf = gunzip_if_gzip(raw).map_err(|e| {
+        let bomb = e.to_string().starts_with("it unpacks");
+        Error::load(path, if bomb { format!("refused: {e}") } else { format!("corrupt gzip data: {e}") })
+    })?;
     if !elf.starts_with(b"\x7fELF") {
         let what = if elf.is_empty() { "an empty file".to_string() } else { format!("starts with {:02x?}", &elf[..elf.len().min(4)]) };
         return Err(Error::load(path, format!("not an OPEN-R object: expected a gzipped or plain ELF shared object, found {what}")));
@@ -56,9 +59,19 @@ pub fn gunzip_if_gzip(raw: Vec<u8>) -> std::io::Result<Vec<u8>> {
         return Ok(raw);
     }
     let mut out = Vec::with_capacity(raw.len() * 3);
-    flate2::read::GzDecoder::new(&raw[..]).read_to_end(&mut out)?;
+    // A few KB of gzip can unpack to gigabytes: stop where the robot's memory ends.
+    flate2::read::GzDecoder::new(&raw[..]).take(UNPACKED_MAX + 1).read_to_end(&mut out)?;
+    if out.len() as u64 > UNPACKED_MAX {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!("it unpacks to more than {} MiB, more than the robot's memory", UNPACKED_MAX >> 20),
+        ));
+    }
     Ok(out)
 }
+
+/// The largest file a gzipped `.BIN` or design data may unpack to (an ERS-7 has 64 MB).
+pub const UNPACKED_MAX: u64 = 64 << 20;
 
 impl Module {
     /// Loads `bin` (its ELF image already read) as `<index>-<stem>.so`. Static
@@ -178,4 +191,23 @@ fn read_entry_table(table: *mut c_void) -> std::result::Result<Vec<(u32, EntryFn
         out.push((row.selector, unsafe { std::mem::transmute::<*mut c_void, EntryFn>(row.entry) }));
     }
     Err("its ObjectEntryTable has no {UNDEF, ENTRY_UNDEF} terminator within 4096 rows".into())
+}
+
+#[cfg(test)]
+mod tests {
+    use std::io::Write;
+
+    #[test]
+    fn a_gzip_bomb_is_refused_not_unpacked() {
+        let gz = |n: usize| {
+            let mut e = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::best());
+            e.write_all(&vec![0u8; n]).unwrap();
+            e.finish().unwrap()
+        };
+        let bomb = gz((super::UNPACKED_MAX + 1) as usize);
+        assert!(bomb.len() < 200 << 10, "{} bytes", bomb.len());
+        let e = super::gunzip_if_gzip(bomb).unwrap_err();
+        assert!(e.to_string().contains("unpacks to more than 64 MiB"), "{e}");
+        assert_eq!(super::gunzip_if_gzip(gz(1000)).unwrap(), vec![0u8; 1000]);
+    }
 }

@@ -429,6 +429,13 @@ fn corrupt_gzip_and_non_elf_objects_are_refused() {
     fs::write(&bin, b"#!/bin/sh\necho not an object\n").unwrap();
     let err = run_err(&p.ms());
     assert!(err.contains("HELLO.BIN: not an OPEN-R object: expected a gzipped or plain ELF shared object"), "{err}");
+
+    // a gzip bomb: ~65 KB that would unpack to 65 MiB
+    let mut enc = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::best());
+    enc.write_all(&vec![0u8; 65 << 20]).unwrap();
+    fs::write(&bin, enc.finish().unwrap()).unwrap();
+    let err = run_err(&p.ms());
+    assert!(err.contains("HELLO.BIN: refused: it unpacks to more than 64 MiB, more than the robot's memory"), "{err}");
 }
 
 #[test]
