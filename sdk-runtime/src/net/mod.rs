@@ -117,11 +117,8 @@ pub fn net() -> &'static Net {
         let fd = unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) };
         assert!(fd >= 0, "eventfd failed");
         // SAFETY: `fd` is the fresh eventfd just created (checked non-negative), owned by nothing else.
-        Net {
-            state: Mutex::new(State::new()),
-            config: NetConfig::new(OPTIONS.get_or_init(Default::default), quiet),
-            wake_fd: unsafe { OwnedFd::from_raw_fd(fd) },
-        }
+        let wake_fd = unsafe { OwnedFd::from_raw_fd(fd) };
+        Net { state: Mutex::new(State::new()), config: NetConfig::new(OPTIONS.get_or_init(Default::default), quiet), wake_fd }
     });
     if started {
         std::thread::Builder::new().name("ipstack".into()).spawn(|| stack::poll_loop(net())).expect("spawn the IPStack thread");
