@@ -191,7 +191,9 @@ fn bad_input_gets_the_error_codes_of_the_spec() {
         ("udp-send-outside", 13), // UDP_BUFFER_INVALID (TCP's is 16)
         ("udp-unknown-op", 15),   // UDP_OPERATION_UNKNOWN
         ("udp-send", 0),
+        ("destroy-pending-buffer", 1), // ANT_FAIL: a Receive still writes into it
         ("udp-close", 0),
+        ("destroy-buffer-after-close", 0),
         ("udp-send-closed", 2),            // UDP_CONNECTION_CLOSED
         ("dns-address-before-lookup", 10), // DNS_OPERATION_INVALID
         ("dns-lookup", 0),
@@ -205,6 +207,7 @@ fn bad_input_gets_the_error_codes_of_the_spec() {
     }
     assert!(out.stdout.contains("NetErrors : dns-missing n_address = 0, name = no-such-host.invalid.\n"), "{}", out.stdout);
     assert!(out.stdout.contains("NetErrors : done"));
+    assert!(out.stderr.contains("destroyed while a Send or Receive on it is pending: refused (antFAIL), it stays allocated"), "{}", out.stderr);
     assert_eq!(out.code, Some(0), "{}", out.stderr);
 }
 

@@ -20,6 +20,16 @@ pub enum Endpoint {
     Dns(dns::DnsEp),
 }
 
+impl Endpoint {
+    fn uses_buffer(&self, base: usize, size: usize) -> bool {
+        match self {
+            Endpoint::Tcp(t) => t.uses_buffer(base, size),
+            Endpoint::Udp(u) => u.uses_buffer(base, size),
+            Endpoint::Dns(_) => false,
+        }
+    }
+}
+
 #[derive(Clone)]
 enum RegValue {
     Str(String),
@@ -267,6 +277,17 @@ fn env_op(st: &mut State, p: Pending) {
             p.complete(r)
         }
         op::ENV_DESTROY_BUFFER => match st.buffers.get(&req.region) {
+            // The kernel may still read or write it for a pending operation: freeing it
+            // now would corrupt the heap. The buffer stays; the program is told.
+            Some(&(base, size)) if base == req.region_base as usize && st.eps.values().any(|e| e.uses_buffer(base, size)) => {
+                if let Some(rt) = crate::runtime::Runtime::get() {
+                    rt.diag.warn(&format!(
+                        "net: shared buffer {} destroyed while a Send or Receive on it is pending: refused (antFAIL), it stays allocated",
+                        req.region
+                    ));
+                }
+                p.fail(ant::FAIL)
+            }
             Some(&(base, size)) if base == req.region_base as usize => {
                 st.buffers.remove(&req.region);
                 let layout = std::alloc::Layout::from_size_align(size, 4096).expect("valid layout");

@@ -67,6 +67,12 @@ pub struct Listener {
 }
 
 impl TcpEp {
+    /// Whether a pending Send or Receive reads or writes `[base, base+size)`.
+    pub(super) fn uses_buffer(&self, base: usize, size: usize) -> bool {
+        let inside = |p: usize| p >= base && p < base + size;
+        self.send.as_ref().is_some_and(|s| inside(s.buf)) || self.recv.as_ref().is_some_and(|r| inside(r.buf))
+    }
+
     /// What the poll thread waits for: the socket, its events, and when a delayed Listen
     /// error is due.
     pub(super) fn interest(&self) -> (Option<RawFd>, libc::c_short, Option<Instant>) {
@@ -413,7 +419,7 @@ fn push_send(t: &mut TcpEp, fd: RawFd) -> bool {
     let Some(s) = t.send.as_mut() else { return false };
     let mut outcome = None;
     while s.done < s.size {
-        // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`); a program that destroys a buffer with an operation pending on it breaks its own memory, as on the robot (issue 18 note).
+        // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`), and the IPStack refuses to destroy a buffer while an operation on it is pending (ENV_DESTROY_BUFFER).
         match unsafe { sys::send(fd, (s.buf + s.done) as *const u8, s.size - s.done) } {
             Ok(n) => s.done += n,
             Err(libc::EINTR) => {}
@@ -451,7 +457,7 @@ fn pull_receive(t: &mut TcpEp, fd: RawFd) {
         failure = Some(e);
     } else {
         while r.got < r.max {
-            // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`); a program that destroys a buffer with an operation pending on it breaks its own memory, as on the robot (issue 18 note).
+            // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`), and the IPStack refuses to destroy a buffer while an operation on it is pending (ENV_DESTROY_BUFFER).
             match unsafe { sys::recv(fd, (r.buf + r.got) as *mut u8, r.max - r.got) } {
                 Ok(0) => {
                     t.eof = true;

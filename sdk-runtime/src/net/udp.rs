@@ -20,6 +20,12 @@ pub struct UdpEp {
 }
 
 impl UdpEp {
+    /// Whether a pending Send or Receive reads or writes `[base, base+size)`.
+    pub(super) fn uses_buffer(&self, base: usize, size: usize) -> bool {
+        let inside = |p: usize| p >= base && p < base + size;
+        self.send.as_ref().is_some_and(|s| inside(s.1)) || self.recv.as_ref().is_some_and(|r| inside(r.1))
+    }
+
     /// What the poll thread waits for: the socket and its events.
     pub(super) fn interest(&self) -> (Option<RawFd>, libc::c_short) {
         let mut ev = 0;
@@ -188,7 +194,7 @@ fn address(u: &mut UdpEp, cfg: &NetConfig, p: Pending) {
 pub(super) fn progress(u: &mut UdpEp, cfg: &NetConfig) {
     let Some(fd) = u.fd.as_ref().map(|f| f.as_raw_fd()) else { return };
     if let Some((_, buf, size, to)) = u.send.as_ref() {
-        // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`); a program that destroys a buffer with an operation pending on it breaks its own memory, as on the robot (issue 18 note).
+        // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`), and the IPStack refuses to destroy a buffer while an operation on it is pending (ENV_DESTROY_BUFFER).
         let code = match unsafe { sys::sendto(fd, *buf as *const u8, *size, *to) } {
             Ok(_) => Some(udp::SUCCESS),
             Err(libc::EAGAIN | libc::EINTR) => u.nonblocking.then_some(udp::WOULDBLOCK),
@@ -201,7 +207,7 @@ pub(super) fn progress(u: &mut UdpEp, cfg: &NetConfig) {
         }
     }
     if let Some((_, buf, size)) = u.recv.as_ref() {
-        // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`); a program that destroys a buffer with an operation pending on it breaks its own memory, as on the robot (issue 18 note).
+        // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`), and the IPStack refuses to destroy a buffer while an operation on it is pending (ENV_DESTROY_BUFFER).
         let out = match unsafe { sys::recvfrom(fd, *buf as *mut u8, *size) } {
             Ok((n, (fa, fp))) => Some((udp::SUCCESS, n, fa, fp)),
             Err(libc::EAGAIN | libc::EINTR) => u.nonblocking.then_some((udp::WOULDBLOCK, 0, 0, 0)),

@@ -65,6 +65,13 @@ NetErrors::DoDestroy(const OSystemEvent& event)
 }
 
 void
+NetErrors::ReceiveCont(void* msg)
+{
+    UDPEndpointReceiveMsg* receiveMsg = (UDPEndpointReceiveMsg*)msg;
+    Check("udp-pending-receive", receiveMsg->error);
+}
+
+void
 NetErrors::Check(const char* what, int got)
 {
     OSYSPRINT(("NetErrors : %s = %d\n", what, got));
@@ -206,9 +213,25 @@ NetErrors::UDPChecks(Port udpPort)
     sendMsg.Call(ipstackRef, sizeof(sendMsg));
     Check("udp-send", sendMsg.error);
 
+    // a buffer destroyed while a Receive into it is pending: the IPStack refuses,
+    // because the pending Receive still writes into it
+    antEnvCreateSharedBufferMsg pendingBuffer(1024);
+    pendingBuffer.Call(ipstackRef, sizeof(pendingBuffer));
+    pendingBuffer.buffer.Map();
+    UDPEndpointReceiveMsg pending(ep, (byte*)pendingBuffer.buffer.GetAddress(), 1024);
+    pending.Send(ipstackRef, myOID_, Extra_Entry[entryReceiveCont], sizeof(pending));
+    antEnvDestroySharedBufferMsg destroyPending(pendingBuffer.buffer);
+    destroyPending.Call(ipstackRef, sizeof(destroyPending));
+    Check("destroy-pending-buffer", destroyPending.error);
+
     UDPEndpointCloseMsg closeMsg(ep);
     closeMsg.Call(ipstackRef, sizeof(closeMsg));
     Check("udp-close", closeMsg.error);
+
+    // once the Receive has ended, the buffer can go
+    antEnvDestroySharedBufferMsg destroyLater(pendingBuffer.buffer);
+    destroyLater.Call(ipstackRef, sizeof(destroyLater));
+    Check("destroy-buffer-after-close", destroyLater.error);
 
     UDPEndpointSendMsg late(ep, "127.0.0.1", udpPort, big, 8);
     late.Call(ipstackRef, sizeof(late));

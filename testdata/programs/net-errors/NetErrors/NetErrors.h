@@ -30,6 +30,8 @@ public:
     virtual OStatus DoStop   (const OSystemEvent& event);
     virtual OStatus DoDestroy(const OSystemEvent& event);
 
+    void ReceiveCont(void* msg);
+
 private:
     void Check(const char* what, int got);
     antModuleRef NewEndpoint(int protocol);
