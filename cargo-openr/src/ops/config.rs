@@ -86,18 +86,27 @@ pub struct ProjectFile {
     pub base: Option<(String, usize)>,
 }
 
+/// The 1-based line of byte `offset` in `text`.
+fn line_of(text: &str, offset: usize) -> usize {
+    text[..offset.min(text.len())].matches('\n').count() + 1
+}
+
+/// Parses a TOML file (openr.toml, a Cargo.toml); errors read `<file>:<line>: …`.
+pub fn parse_toml<T: serde::de::DeserializeOwned>(path: &Path, text: &str) -> anyhow::Result<T> {
+    toml::from_str(text).map_err(|e| {
+        let line = e.span().map_or(1, |s| line_of(text, s.start));
+        anyhow::anyhow!("{}:{line}: {}", path.display(), e.message())
+    })
+}
+
 /// Parses an `openr.toml` (TOML, top-level keys only: strings or numbers). Errors read
 /// `<file>:<line>: …`.
 pub fn parse_project_file(path: &Path, text: &str) -> anyhow::Result<ProjectFile> {
     type Keys = std::collections::BTreeMap<toml::Spanned<String>, toml::Spanned<toml::Value>>;
-    let line_of = |offset: usize| text[..offset.min(text.len())].matches('\n').count() + 1;
-    let keys: Keys = toml::from_str(text).map_err(|e| {
-        let line = e.span().map_or(1, |s| line_of(s.start));
-        anyhow::anyhow!("{}:{line}: {}", path.display(), e.message())
-    })?;
+    let keys: Keys = parse_toml(path, text)?;
     let mut out = ProjectFile::default();
     for (key, value) in keys {
-        let n = line_of(key.span().start);
+        let n = line_of(text, key.span().start);
         let err = |m: String| anyhow::anyhow!("{}:{n}: {m}", path.display());
         let value = match value.get_ref() {
             toml::Value::String(s) => s.clone(),

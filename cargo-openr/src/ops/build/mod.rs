@@ -169,10 +169,7 @@ fn derived_bin(name: &str) -> String {
 /// A Cargo.toml that builds a `cdylib` package is a Rust object: its package name and
 /// `[package.metadata.openr] bin`, if given. A workspace manifest or an rlib is not.
 fn rust_object(path: &Path, text: &str) -> anyhow::Result<Option<(String, Option<String>)>> {
-    let doc: toml::Table = toml::from_str(text).map_err(|e| {
-        let line = e.span().map_or(1, |s| text[..s.start.min(text.len())].matches('\n').count() + 1);
-        anyhow::anyhow!("{}:{line}: {}", path.display(), e.message())
-    })?;
+    let doc: toml::Table = crate::ops::config::parse_toml(path, text)?;
     let cdylib =
         doc.get("lib").and_then(|l| l.get("crate-type")).and_then(|t| t.as_array()).is_some_and(|types| types.iter().any(|t| t.as_str() == Some("cdylib")));
     let Some(package) = doc.get("package").filter(|_| cdylib) else { return Ok(None) };
