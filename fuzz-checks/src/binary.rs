@@ -100,3 +100,23 @@ pub fn elf(data: &[u8]) -> bool {
         }
     }
 }
+
+/// A DNS server's answer as the robot's resolver reads it (`antDNS` lookups): the first
+/// two bytes are taken as the query id, so the id check passes as often as it fails. No
+/// read past the datagram, no more addresses than answers; a query the resolver builds
+/// reads back to the name it was built from.
+pub fn dns(data: &[u8]) -> bool {
+    use sdk_runtime::net::dns;
+    let id = u16::from_be_bytes([data.first().copied().unwrap_or(0), data.get(1).copied().unwrap_or(0)]);
+    let name: String = data.iter().take(80).map(|&b| if b.is_ascii_alphanumeric() || b == b'-' { b as char } else { '.' }).collect();
+    let query = dns::build_query(id, &name, 1);
+    let labels: Vec<String> = name.split('.').filter(|l| !l.is_empty()).map(|l| l[..l.len().min(63)].to_string()).collect();
+    assert_eq!(dns::read_name(&query, 12).map(|(n, _)| n), Some(labels.join(".")), "query for {name:?}");
+    let Some((rcode, answer)) = dns::parse_response(data, id) else { return false };
+    let answers = u16::from_be_bytes([data[6], data[7]]) as usize;
+    assert!(rcode <= 15 && answer.addrs.len() <= answers);
+    for n in answer.cname.iter().chain(&answer.ptr) {
+        assert!(n.len() <= 64 * 64, "a name of {} bytes", n.len());
+    }
+    true
+}

@@ -9,7 +9,7 @@ mod binary;
 pub mod gen;
 mod text;
 
-pub use binary::{control, elf, wire};
+pub use binary::{control, dns, elf, wire};
 pub use text::{hostgw, ms_cfg, ocf, openr_toml, stub_cfg, wlan};
 
 /// A fuzz target: its name (as in `fuzz/fuzz_targets/<name>.rs`) and its check.
@@ -57,6 +57,7 @@ pub const TARGETS: &[Target] = &[
     },
     Target { name: "wire", check: wire, dict: &[b"ORP1\x01\x00", b"\x00\x00\x40\x00", b"\xff\xff"] },
     Target { name: "control", check: control, dict: &[b"status", b"pause", b"resume", b"step ", b"speed ", b"max", b"shutdown", b"1e-300", b"1000000", b"\n"] },
+    Target { name: "dns", check: dns, dict: &[b"\x81\x80", b"\x00\x01", b"\xc0\x0c", b"\x00\x05\x00\x01", b"\x00\x0c\x00\x01", b"\x00\x04", b"\x3f"] },
     Target { name: "elf", check: elf, dict: &[b"\x7fELF\x02\x01\x01", b"\x3e\x00", b"\x03\x00", b"\x38\x00", b"\x1f\x8b\x08"] },
 ];
 
@@ -131,6 +132,16 @@ fn built_seeds(target: &str) -> Vec<Vec<u8>> {
             let clock = wire::message(wire::CLOCK, 4, &1u32.to_le_bytes());
             let bye = wire::message(wire::BYE, 5, &[]);
             vec![[hello.clone(), readings.clone(), clock, bye].concat(), hello, readings]
+        }
+        "dns" => {
+            // A response to `aibo.example` with a CNAME and an A record, compressed names.
+            let mut r = sdk_runtime::net::dns::build_query(0x0a1b, "aibo.example", 1);
+            r[2] = 0x81;
+            r[3] = 0x80;
+            r[7] = 2;
+            r.extend_from_slice(&[0xc0, 12, 0, 5, 0, 1, 0, 0, 0, 60, 0, 6, 3, b'd', b'o', b'g', 0xc0, 17]);
+            r.extend_from_slice(&[0xc0, 30, 0, 1, 0, 1, 0, 0, 0, 60, 0, 4, 10, 0, 1, 2]);
+            vec![r]
         }
         "elf" => {
             // Shared objects of the system (the tests of elf_check use them too), plain

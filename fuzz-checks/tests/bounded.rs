@@ -65,6 +65,11 @@ fn control() {
 }
 
 #[test]
+fn dns() {
+    run("dns", 3000);
+}
+
+#[test]
 fn elf() {
     run("elf", 1000);
 }

@@ -69,9 +69,19 @@ pub(crate) fn reply<T: Copy>(msg: &T) {
     }
 }
 
+/// A reply type `call` may fill from the bytes another object sent.
+///
+/// # Safety
+/// Every bit pattern of `size_of::<Self>()` bytes is a valid value: a `repr(C)` struct of
+/// integers and raw pointers only (no `bool`, enum, reference or padding-sensitive field).
+pub(crate) unsafe trait Plain: Copy {}
+
+// SAFETY: u32 fields and an OServiceEntry (a raw pointer and a u32): any bits are valid.
+unsafe impl Plain for crate::abi::OControlReplyMessage {}
+
 /// Calls `dest` and reads a reply of type `R`; `Err(code)` with the host's code
 /// (-1 unknown, -2 self, -3 timeout), or -4 for a short reply.
-pub(crate) fn call<T: Copy, R: Copy>(dest: OServiceEntry, msg: &T, timeout_ms: u32) -> Result<R, i32> {
+pub(crate) fn call<T: Copy, R: Plain>(dest: OServiceEntry, msg: &T, timeout_ms: u32) -> Result<R, i32> {
     let Some(a) = api() else { return Err(-1) };
     let mut out = std::mem::MaybeUninit::<R>::zeroed();
     let mut got = 0usize;
@@ -94,7 +104,7 @@ pub(crate) fn call<T: Copy, R: Copy>(dest: OServiceEntry, msg: &T, timeout_ms: u
     if got < std::mem::size_of::<R>() {
         return Err(-4);
     }
-    // SAFETY: zeroed then filled; plain integer/pointer struct.
+    // SAFETY: zeroed, then filled with size_of::<R>() bytes; R: Plain takes any bits.
     Ok(unsafe { out.assume_init() })
 }
 

@@ -165,18 +165,40 @@ pub fn build(f: impl Fn(*mut c_void, usize) -> usize) -> Vec<u8> {
     }
 }
 
-/// Reads `{Selector selector; Entry entry;}` rows until `selector == UNDEF`.
+/// Rows the symbol at `table` spans by its ELF size (`st_size`); `None` when the dynamic
+/// loader knows no sized symbol starting there.
+fn table_rows(table: *mut c_void, row: usize) -> Option<usize> {
+    const RTLD_DL_SYMENT: libc::c_int = 1; // <dlfcn.h>: extra_info is the symbol's ElfW(Sym)
+                                           // SAFETY: all-zero is a valid Dl_info (null pointers) for dladdr1 to fill.
+    let mut info: libc::Dl_info = unsafe { std::mem::zeroed() };
+    let mut sym: *mut c_void = std::ptr::null_mut();
+    // SAFETY: `table` is an address inside a loaded object; dladdr1 writes `info` and, with
+    // RTLD_DL_SYMENT, a pointer to the matching symbol table entry into `sym`.
+    let found = unsafe { libc::dladdr1(table, &mut info, &mut sym, RTLD_DL_SYMENT) } != 0;
+    if !found || sym.is_null() || info.dli_saddr != table {
+        return None;
+    }
+    // SAFETY: dladdr1 set `sym` to the object's Elf64_Sym entry, which lives as long as the object.
+    let size = unsafe { (*sym.cast::<libc::Elf64_Sym>()).st_size } as usize;
+    (size >= row).then_some(size / row)
+}
+
+/// Reads `{Selector selector; Entry entry;}` rows until `selector == UNDEF`, never past
+/// the array's own size (its symbol's `st_size`, else at most 4096 rows).
 fn read_entry_table(table: *mut c_void) -> std::result::Result<Vec<(u32, EntryFn)>, String> {
     #[repr(C)]
     struct Row {
         selector: u32,
         entry: *mut c_void,
     }
+    let sized = table_rows(table, std::mem::size_of::<Row>());
+    let limit = sized.unwrap_or(4096).min(4096);
     let rows = table.cast::<Row>();
     let mut out = Vec::new();
-    for i in 0..4096 {
-        // SAFETY: the object's `{selector, entry}` array ends with an UNDEF row (object model
-        // 5.6), and no row past that one is read. A table without it is read up to 4096 rows.
+    for i in 0..limit {
+        // SAFETY: row `i` lies inside the ObjectEntryTable array: `limit` is the rows its ELF
+        // symbol spans (an array without a size is read up to 4096 rows, as it ends with an
+        // UNDEF row by object model 5.6).
         let row = unsafe { &*rows.add(i) };
         if row.selector == UNDEF {
             if out.is_empty() {
@@ -190,7 +212,10 @@ fn read_entry_table(table: *mut c_void) -> std::result::Result<Vec<(u32, EntryFn
         // SAFETY: a non-null entry of the table is an `void (*)(void*)` entry function (object model 5.6).
         out.push((row.selector, unsafe { std::mem::transmute::<*mut c_void, EntryFn>(row.entry) }));
     }
-    Err("its ObjectEntryTable has no {UNDEF, ENTRY_UNDEF} terminator within 4096 rows".into())
+    Err(match sized {
+        Some(n) => format!("its ObjectEntryTable ({n} rows) does not end with the {{UNDEF, ENTRY_UNDEF}} row"),
+        None => "its ObjectEntryTable has no {UNDEF, ENTRY_UNDEF} terminator within 4096 rows".into(),
+    })
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use crate::support::{run, sdk_root};
+use crate::support::{build, run, run_ms, sdk_root};
 
 fn tool(rel: &str) -> PathBuf {
     sdk_root().join(rel)
@@ -99,6 +99,25 @@ fn mkbin_rejects_an_object_without_entry_table() {
     assert!(log.contains("symbol ObjectEntryTable not found"), "{log}");
     let left: Vec<String> = files_in(dir.path()).into_iter().filter(|f| f.contains(".bin")).collect();
     assert!(left.is_empty(), "no output or partial file left: {left:?}");
+}
+
+#[test]
+fn run_refuses_an_entry_table_without_its_undef_row() {
+    // Two rows and no {UNDEF, ENTRY_UNDEF}: the table is read only as far as its symbol's
+    // size, not on into whatever the linker put after it.
+    let dir = tempfile::tempdir().unwrap();
+    let unterminated =
+        STUB.replace("{UNDEF, (Entry) ENTRY_UNDEF} };", "{oentryINIT, (Entry)InitEntry} };\nObjectEntry Next[] = { {UNDEF, (Entry) ENTRY_UNDEF} };");
+    compile(dir.path(), "Tiny.cc", &unterminated);
+    fs::write(dir.path().join("tiny.ocf"), "object tiny 3072 16384 128 cache tlb user\n").unwrap();
+    let (ok, log) = mkbin(dir.path(), &["-o", "tiny.bin", "Tiny.o", "tiny.ocf", "-lObjectComm", "-lOPENR"]);
+    assert!(ok, "{log}");
+    let p = build("hello");
+    let bin = p.ms().join("OPEN-R/MW/OBJS/HELLO.BIN");
+    fs::copy(dir.path().join("tiny.bin"), &bin).unwrap();
+    let out = run_ms(&p.ms(), &["--for", "100ms", "--speed", "max"]);
+    assert!(matches!(out.code, Some(c) if c != 0), "{:?}\n{}", out.code, out.stderr);
+    assert!(out.stderr.contains("its ObjectEntryTable (2 rows) does not end with the {UNDEF, ENTRY_UNDEF} row"), "{}", out.stderr);
 }
 
 #[test]

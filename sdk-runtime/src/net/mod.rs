@@ -14,7 +14,7 @@
 
 mod codes;
 pub mod config;
-mod dns;
+pub mod dns;
 mod stack;
 mod sys;
 mod tcp;
