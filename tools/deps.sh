@@ -44,6 +44,12 @@ if ! cargo clippy --version >/dev/null 2>&1; then
     echo "warning: cargo clippy not found and no rustup to add it; tools/test.sh needs it (Debian: apt-get install rust-clippy)" >&2
   fi
 fi
+# The declared MSRV (rust-version in Cargo.toml): tools/test.sh checks the workspace with it.
+MSRV=$(sed -n 's/^rust-version = "\(.*\)"/\1/p' "$(dirname "$0")/../Cargo.toml")
+if command -v rustup >/dev/null 2>&1 && ! rustup run "$MSRV" rustc --version >/dev/null 2>&1; then
+  echo "installing: Rust $MSRV, the declared MSRV (rustup toolchain, minimal profile)" >&2
+  rustup toolchain install "$MSRV" --profile minimal >&2 || echo "warning: could not install Rust $MSRV (offline?); tools/test.sh needs it" >&2
+fi
 
 if ! "$VENV/bin/python" -c "import mujoco, sys; sys.exit(mujoco.__version__ != '$MUJOCO_VERSION')" >/dev/null 2>&1; then
   echo "installing: mujoco==$MUJOCO_VERSION (pip, into $VENV)" >&2
