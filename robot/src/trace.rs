@@ -42,36 +42,88 @@
 //!
 //! Degrees and m/s² are rounded to 3 decimals.
 
-use std::fmt::Write;
+use serde::{Serialize, Serializer};
 
 /// Summary of one command slot for the trace.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct SlotSummary {
     pub index: usize,
     pub locator: Option<&'static str>,
     pub primitive: u32,
+    #[serde(rename = "type")]
     pub type_name: &'static str,
     pub ignored: bool,
     /// JOINT_COMMAND2: one element per frame, degrees. Held types: [value, period] or
     /// [intensity, mode, period].
+    #[serde(serialize_with = "as_values")]
     pub values: Vec<Vec<f64>>,
 }
 
-/// What happened.
-#[derive(Clone, Debug, PartialEq)]
+/// What happened. Serialised as the fields that follow `kind` (untagged: the record
+/// writes `kind` itself, and both LED variants are `"led"`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
 pub enum TraceEvent {
-    VectorStart { conn: u32, token: u64, duration_frames: u32, slots: Vec<SlotSummary> },
-    VectorDone { conn: u32, token: u64 },
-    Led2 { locator: &'static str, on: bool },
-    Led3 { locator: &'static str, intensity: u8, mode: u16 },
-    FaceMode { mode: u16 },
-    Ear { locator: &'static str, state: u32 },
-    EarHeld { locator: &'static str },
-    Clamp { locator: &'static str, requested_deg: f64, clamped_deg: f64, combined: bool },
-    Sensor { first_frame: u32, joints: Vec<(&'static str, f64)>, accel: [f64; 3], paws: [bool; 4] },
-    MotorPower { on: bool },
-    Gain { locator: &'static str, enabled: bool, p: u16, i: u16, d: u16 },
-    Sync { key: u32, timed_out: bool },
+    VectorStart {
+        conn: u32,
+        token: u64,
+        duration_frames: u32,
+        slots: Vec<SlotSummary>,
+    },
+    VectorDone {
+        conn: u32,
+        token: u64,
+    },
+    Led2 {
+        locator: &'static str,
+        on: bool,
+    },
+    Led3 {
+        locator: &'static str,
+        intensity: u8,
+        mode: u16,
+    },
+    FaceMode {
+        mode: u16,
+    },
+    Ear {
+        locator: &'static str,
+        state: u32,
+    },
+    EarHeld {
+        locator: &'static str,
+    },
+    Clamp {
+        locator: &'static str,
+        #[serde(serialize_with = "as_num")]
+        requested_deg: f64,
+        #[serde(serialize_with = "as_num")]
+        clamped_deg: f64,
+        #[serde(rename = "rule", serialize_with = "as_rule")]
+        combined: bool,
+    },
+    Sensor {
+        first_frame: u32,
+        #[serde(serialize_with = "as_joint_map")]
+        joints: Vec<(&'static str, f64)>,
+        #[serde(serialize_with = "as_nums")]
+        accel: [f64; 3],
+        paws: [bool; 4],
+    },
+    MotorPower {
+        on: bool,
+    },
+    Gain {
+        locator: &'static str,
+        enabled: bool,
+        p: u16,
+        i: u16,
+        d: u16,
+    },
+    Sync {
+        key: u32,
+        timed_out: bool,
+    },
 }
 
 /// One trace line.
@@ -82,34 +134,53 @@ pub struct TraceRecord {
     pub event: TraceEvent,
 }
 
-fn num(out: &mut String, v: f64) {
-    if v.is_finite() {
-        let r = (v * 1000.0).round() / 1000.0;
-        let _ = write!(out, "{}", if r == 0.0 { 0.0 } else { r });
-    } else {
-        out.push_str("null");
-    }
-}
+/// A measured value: rounded to 3 decimals, written as an integer when it is one (`-10`,
+/// not `-10.0`; `-0` is `0`), `null` when not finite.
+#[derive(Clone, Copy)]
+struct Rounded(f64);
 
-fn string(out: &mut String, s: &str) {
-    out.push('"');
-    for c in s.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if (c as u32) < 0x20 => {
-                let _ = write!(out, "\\u{:04x}", c as u32);
-            }
-            c => out.push(c),
+impl Serialize for Rounded {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        if !self.0.is_finite() {
+            return s.serialize_none();
+        }
+        let r = (self.0 * 1000.0).round() / 1000.0;
+        if r.fract() == 0.0 && r.abs() < (1u64 << 53) as f64 {
+            s.serialize_i64(r as i64)
+        } else {
+            s.serialize_f64(r)
         }
     }
-    out.push('"');
 }
 
-fn key(out: &mut String, k: &str) {
-    out.push(',');
-    string(out, k);
-    out.push(':');
+fn as_num<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+    Rounded(*v).serialize(s)
+}
+
+fn as_nums<S: Serializer>(v: &[f64; 3], s: S) -> Result<S::Ok, S::Error> {
+    s.collect_seq(v.iter().map(|x| Rounded(*x)))
+}
+
+fn as_joint_map<S: Serializer>(v: &[(&'static str, f64)], s: S) -> Result<S::Ok, S::Error> {
+    s.collect_map(v.iter().map(|(l, d)| (*l, Rounded(*d))))
+}
+
+fn as_rule<S: Serializer>(combined: &bool, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(if *combined { "combined" } else { "range" })
+}
+
+/// One element per frame: a bare number when the element is one value, else an array.
+fn as_values<S: Serializer>(v: &[Vec<f64>], s: S) -> Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    #[serde(untagged)]
+    enum Element {
+        One(Rounded),
+        Many(Vec<Rounded>),
+    }
+    s.collect_seq(v.iter().map(|e| match e.as_slice() {
+        [x] => Element::One(Rounded(*x)),
+        xs => Element::Many(xs.iter().map(|x| Rounded(*x)).collect()),
+    }))
 }
 
 impl TraceRecord {
@@ -131,116 +202,15 @@ impl TraceRecord {
 
     /// One JSON object, no newline.
     pub fn to_json(&self) -> String {
-        let mut o = String::with_capacity(128);
-        let _ = write!(o, "{{\"t_ms\":{},\"frame\":{}", self.t_ms, self.frame);
-        key(&mut o, "kind");
-        string(&mut o, self.kind());
-        match &self.event {
-            TraceEvent::VectorStart { conn, token, duration_frames, slots } => {
-                let _ = write!(o, ",\"conn\":{conn},\"token\":{token},\"duration_frames\":{duration_frames},\"slots\":[");
-                for (i, s) in slots.iter().enumerate() {
-                    if i > 0 {
-                        o.push(',');
-                    }
-                    let _ = write!(o, "{{\"index\":{}", s.index);
-                    key(&mut o, "locator");
-                    match s.locator {
-                        Some(l) => string(&mut o, l),
-                        None => o.push_str("null"),
-                    }
-                    let _ = write!(o, ",\"primitive\":{}", s.primitive);
-                    key(&mut o, "type");
-                    string(&mut o, s.type_name);
-                    let _ = write!(o, ",\"ignored\":{},\"values\":[", s.ignored);
-                    for (k, v) in s.values.iter().enumerate() {
-                        if k > 0 {
-                            o.push(',');
-                        }
-                        if v.len() == 1 {
-                            num(&mut o, v[0]);
-                        } else {
-                            o.push('[');
-                            for (n, x) in v.iter().enumerate() {
-                                if n > 0 {
-                                    o.push(',');
-                                }
-                                num(&mut o, *x);
-                            }
-                            o.push(']');
-                        }
-                    }
-                    o.push_str("]}");
-                }
-                o.push(']');
-            }
-            TraceEvent::VectorDone { conn, token } => {
-                let _ = write!(o, ",\"conn\":{conn},\"token\":{token}");
-            }
-            TraceEvent::Led2 { locator, on } => {
-                key(&mut o, "locator");
-                string(&mut o, locator);
-                let _ = write!(o, ",\"on\":{on}");
-            }
-            TraceEvent::Led3 { locator, intensity, mode } => {
-                key(&mut o, "locator");
-                string(&mut o, locator);
-                let _ = write!(o, ",\"intensity\":{intensity},\"mode\":{mode}");
-            }
-            TraceEvent::FaceMode { mode } => {
-                let _ = write!(o, ",\"mode\":{mode}");
-            }
-            TraceEvent::Ear { locator, state } => {
-                key(&mut o, "locator");
-                string(&mut o, locator);
-                let _ = write!(o, ",\"state\":{state}");
-            }
-            TraceEvent::EarHeld { locator } => {
-                key(&mut o, "locator");
-                string(&mut o, locator);
-            }
-            TraceEvent::Clamp { locator, requested_deg, clamped_deg, combined } => {
-                key(&mut o, "locator");
-                string(&mut o, locator);
-                key(&mut o, "requested_deg");
-                num(&mut o, *requested_deg);
-                key(&mut o, "clamped_deg");
-                num(&mut o, *clamped_deg);
-                key(&mut o, "rule");
-                string(&mut o, if *combined { "combined" } else { "range" });
-            }
-            TraceEvent::Sensor { first_frame, joints, accel, paws } => {
-                let _ = write!(o, ",\"first_frame\":{first_frame},\"joints\":{{");
-                for (i, (l, d)) in joints.iter().enumerate() {
-                    if i > 0 {
-                        o.push(',');
-                    }
-                    string(&mut o, l);
-                    o.push(':');
-                    num(&mut o, *d);
-                }
-                o.push_str("},\"accel\":[");
-                for (i, a) in accel.iter().enumerate() {
-                    if i > 0 {
-                        o.push(',');
-                    }
-                    num(&mut o, *a);
-                }
-                let _ = write!(o, "],\"paws\":[{},{},{},{}]", paws[0], paws[1], paws[2], paws[3]);
-            }
-            TraceEvent::MotorPower { on } => {
-                let _ = write!(o, ",\"on\":{on}");
-            }
-            TraceEvent::Gain { locator, enabled, p, i, d } => {
-                key(&mut o, "locator");
-                string(&mut o, locator);
-                let _ = write!(o, ",\"enabled\":{enabled},\"p\":{p},\"i\":{i},\"d\":{d}");
-            }
-            TraceEvent::Sync { key: k, timed_out } => {
-                let _ = write!(o, ",\"key\":{k},\"timed_out\":{timed_out}");
-            }
+        #[derive(Serialize)]
+        struct Line<'a> {
+            t_ms: u64,
+            frame: u32,
+            kind: &'static str,
+            #[serde(flatten)]
+            event: &'a TraceEvent,
         }
-        o.push('}');
-        o
+        serde_json::to_string(&Line { t_ms: self.t_ms, frame: self.frame, kind: self.kind(), event: &self.event }).expect("a trace record is plain data")
     }
 }
 
@@ -287,5 +257,10 @@ mod tests {
         );
         let c = TraceRecord { t_ms: 0, frame: 0, event: TraceEvent::Clamp { locator: "x", requested_deg: 0.0, clamped_deg: 5.0, combined: false } };
         assert!(c.to_json().ends_with("\"kind\":\"clamp\",\"locator\":\"x\",\"requested_deg\":0,\"clamped_deg\":5,\"rule\":\"range\"}"));
+        let odd =
+            TraceRecord { t_ms: 0, frame: 0, event: TraceEvent::Clamp { locator: "y", requested_deg: f64::NAN, clamped_deg: 1e17 + 0.5, combined: true } };
+        assert!(odd.to_json().ends_with("\"requested_deg\":null,\"clamped_deg\":1e+17,\"rule\":\"combined\"}"), "{}", odd.to_json());
+        let led = TraceRecord { t_ms: 16, frame: 2, event: TraceEvent::Led3 { locator: "l", intensity: 255, mode: 1 } };
+        assert_eq!(led.to_json(), "{\"t_ms\":16,\"frame\":2,\"kind\":\"led\",\"locator\":\"l\",\"intensity\":255,\"mode\":1}");
     }
 }
