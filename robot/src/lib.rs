@@ -545,13 +545,10 @@ impl VirtualRobot {
     /// bytes (the shared region the vector is delivered in).
     pub fn render_image_into(&mut self, frame: u32, out: &mut [u8]) {
         if let Some(rgb) = &self.external_rgb {
-            let n = self.camera.rgb.width * self.camera.rgb.height * 3;
-            self.camera.rgb.data.clear();
-            self.camera.rgb.data.extend_from_slice(&rgb[..n.min(rgb.len())]);
-            self.camera.rgb.data.resize(n, 0);
+            self.camera.fill_from(rgb);
         } else if !self.camera.fill_from_source() {
             let cam = self.camera_model();
-            cam.render(&self.scene.camera, self.scene.wall_mm, &mut self.camera.rgb.data);
+            self.camera.render_scene(&cam, &self.scene.camera, self.scene.wall_mm);
         }
         let id = self.primitive_of(Part::Camera).unwrap_or(PRIMITIVE_ID_UNDEF);
         self.camera.build_vector(id, frame, out);

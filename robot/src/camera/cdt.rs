@@ -92,6 +92,9 @@ pub fn cdt_entry(cr_max: u8, cr_min: u8, cb_max: u8, cb_min: u8) -> u32 {
     cr_min as u32 | (cr_max as u32) << 8 | (cb_min as u32) << 16 | (cb_max as u32) << 24
 }
 
+/// The tables a [`CdtLut`] was built from (None: channel not loaded).
+pub type CdtKey = [Option<[u32; CDT_SEGMENTS]>; CDT_CHANNELS];
+
 /// The loaded tables as two lookup tables: bit k of `cr[seg][cr]` is set when Cr lies
 /// in channel k's Cr range for that Y segment (likewise `cb`).
 #[derive(Clone, Debug)]
@@ -111,6 +114,11 @@ impl CdtLut {
     pub fn load(&mut self, t: &CdtTable) {
         self.tables[t.channel] = Some(t.entries);
         self.rebuild();
+    }
+
+    /// The loaded tables, to tell whether two images were classified alike.
+    pub fn key(&self) -> CdtKey {
+        self.tables
     }
 
     pub fn table(&self, channel: usize) -> Option<&[u32; CDT_SEGMENTS]> {
@@ -135,7 +143,7 @@ impl CdtLut {
     }
 
     /// CDT bits of one pixel (the rule of robot-api 6.7).
-    #[inline]
+    #[inline(always)]
     pub fn classify(&self, y: u8, cr: u8, cb: u8) -> u8 {
         let seg = y as usize >> 3;
         self.cr[seg][cr as usize] & self.cb[seg][cb as usize]

@@ -3,7 +3,7 @@
 /// Fixed-point (×65536) luminance weights 0.51/1.7, 1/1.7, 0.19/1.7 (sum 65536).
 const KY: [i32; 3] = [19_661, 38_550, 7_325];
 
-#[inline]
+#[inline(always)]
 pub(super) fn luma(r: i32, g: i32, b: i32) -> i32 {
     (KY[0] * r + KY[1] * g + KY[2] * b + 32_768) >> 16
 }

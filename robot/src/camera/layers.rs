@@ -16,14 +16,14 @@ use crate::image::{ImageLayout, LayerLayout, TAG_SIZE};
 
 /// Rounded mean of four bytes summed in `sum`: `div_round(sum, 4)` = ⌊(sum + 2) / 4⌋,
 /// which never needs clipping.
-#[inline]
+#[inline(always)]
 fn mean4(sum: u16) -> u8 {
     ((sum + 2) >> 2) as u8
 }
 
 /// A high-pass band, `clip(128 + div_round(n, 4))` for n ∈ −510..=510: that is
 /// ⌊(n + 514) / 4⌋ ∈ 1..=256, so only the upper clip remains.
-#[inline]
+#[inline(always)]
 fn high_pass(n: i16) -> u8 {
     ((n + 514) >> 2).min(255) as u8
 }
@@ -32,19 +32,20 @@ fn high_pass(n: i16) -> u8 {
 /// s = ΣR − ΣY (or ΣB − ΣY) ∈ −1020..=1020 over a 2×2 block. With u = s + 1020 it is
 /// ⌊(256u + 1020) / 2040⌋ = ⌊(32u + 127.5) / 255⌋ = ⌊(32u + 127) / 255⌋ (no multiple
 /// of 255 lies in between), at most 256, and 32u + 127 fits in 16 bits.
-#[inline]
+#[inline(always)]
 fn chroma(s: i16) -> u8 {
     ((32 * (s + 1020) as u16 + 127) / 255).min(255) as u8
 }
 
 /// The six bands (or any six `w`-long parts) of a layer row.
+#[inline(always)]
 fn six<T>(row: &mut [T], w: usize) -> [&mut [T]; 6] {
     let mut parts = row.chunks_exact_mut(w);
     std::array::from_fn(|_| parts.next().expect("a row of six bands"))
 }
 
 /// The two RGB pixels of `q` (6 bytes), read as two little-endian words.
-#[inline]
+#[inline(always)]
 fn pixel_pair(q: &[u8]) -> [[i32; 3]; 2] {
     let lo = u32::from_le_bytes(q[..4].try_into().expect("6 bytes"));
     let hi = u16::from_le_bytes(q[4..6].try_into().expect("6 bytes")) as i32;
@@ -53,6 +54,7 @@ fn pixel_pair(q: &[u8]) -> [[i32; 3]; 2] {
 }
 
 /// Writes layer H of `layout` from the sensor-resolution RGB image (`2w × 2h`).
+#[inline(always)]
 fn synth_from_rgb(l: &LayerLayout, rgb: &[u8], dst: &mut [u8]) {
     let w = l.width;
     let sensor_row = 2 * w * 3;
@@ -90,7 +92,7 @@ fn synth_from_rgb(l: &LayerLayout, rgb: &[u8], dst: &mut [u8]) {
 }
 
 /// The two bytes of `q` (2 bytes), read as one little-endian word.
-#[inline]
+#[inline(always)]
 fn byte_pair(q: &[u8]) -> (u16, u16) {
     let v = u16::from_le_bytes(q.try_into().expect("2 bytes"));
     (v & 0xff, v >> 8)
@@ -98,6 +100,7 @@ fn byte_pair(q: &[u8]) -> (u16, u16) {
 
 /// Writes an HPF layer `l` from the Y/Cr/Cb bands of the previous (double-size) HPF
 /// layer `src` (whose data is `s`).
+#[inline(always)]
 fn synth_from_layer(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8]) {
     let (w, sw) = (l.width, src.width);
     let rows = dst.chunks_exact_mut(l.row_stride()).zip(s.chunks_exact(2 * src.row_stride())).take(l.height);
@@ -126,6 +129,7 @@ fn synth_from_layer(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8]
 }
 
 /// Adds the number of bytes of `pixels` with bit k set to `counts[k]`.
+#[inline(always)]
 fn count_bits(pixels: &[u8], counts: &mut [u32; CDT_CHANNELS]) {
     // Byte-wide sums vectorise well; 255 bytes cannot overflow them (wrapping_add
     // only spares debug builds the overflow check).
@@ -138,6 +142,7 @@ fn count_bits(pixels: &[u8], counts: &mut [u32; CDT_CHANNELS]) {
 
 /// Writes the CDT layer `l` from an HPF layer of the same size; returns per-channel
 /// counts of matched pixels (excluding the tag bytes).
+#[inline(always)]
 fn synth_cdt(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8], lut: &CdtLut) -> [u32; CDT_CHANNELS] {
     let mut counts = [0u32; CDT_CHANNELS];
     let (w, h, sw) = (l.width.min(src.width), l.height.min(src.height), src.width);
@@ -157,6 +162,24 @@ fn synth_cdt(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8], lut: 
 /// Fills the four layers of `buf` (an image vector of `layout`) from a sensor-size
 /// RGB image and writes the tags. Returns the per-channel CDT pixel counts.
 pub fn synthesize(layout: &ImageLayout, rgb: &[u8], lut: &CdtLut, field_counter: u32, buf: &mut [u8]) -> [u32; CDT_CHANNELS] {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2 (checked just above), all `synthesize_avx2` needs.
+        return unsafe { synthesize_avx2(layout, rgb, lut, field_counter, buf) };
+    }
+    synthesize_layers(layout, rgb, lut, field_counter, buf)
+}
+
+/// [`synthesize_layers`] compiled for AVX2: the same integer arithmetic (the same bytes)
+/// in wider vectors, ~2× faster than baseline x86-64's SSE2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn synthesize_avx2(layout: &ImageLayout, rgb: &[u8], lut: &CdtLut, field_counter: u32, buf: &mut [u8]) -> [u32; CDT_CHANNELS] {
+    synthesize_layers(layout, rgb, lut, field_counter, buf)
+}
+
+#[inline(always)]
+fn synthesize_layers(layout: &ImageLayout, rgb: &[u8], lut: &CdtLut, field_counter: u32, buf: &mut [u8]) -> [u32; CDT_CHANNELS] {
     let [lh, lm, ll, lc] = layout.layers;
     debug_assert!(lh.data_offset + lh.data_size() <= lm.data_offset && lm.data_offset + lm.data_size() <= ll.data_offset);
     debug_assert!(ll.data_offset + ll.data_size() <= lc.data_offset);

@@ -30,6 +30,8 @@ mod colour;
 #[cfg(test)]
 mod end_to_end;
 mod layers;
+#[cfg(test)]
+mod reuse_tests;
 mod source;
 
 pub use cdt::*;
@@ -39,6 +41,7 @@ pub use source::*;
 
 use super::image::ImageLayout;
 use super::model::{Design, PrimitiveId};
+use super::render::{CameraWorld, PinholeCamera};
 use super::status::*;
 
 // Camera parameters (robot-api 5.3, 5.4, 10).
@@ -123,11 +126,26 @@ pub struct Camera {
     /// Counter written into the next image's tag (starts at 1).
     pub field_counter: u32,
     pub source: Option<FileSource>,
-    /// The sensor-resolution RGB of the last image.
+    /// The sensor-resolution RGB of the last image (camera settings applied).
     pub rgb: RgbImage,
     /// CDT pixel counts of the last image.
     pub last_counts: [u32; CDT_CHANNELS],
     pub settings: CameraSettings,
+    reuse: Reuse,
+}
+
+/// What `rgb` and the last layers were made from: a robot whose camera and scene did not
+/// move since the last image gets the same picture again without rendering or
+/// synthesising it (a camera program that holds its head still pays one copy).
+#[derive(Clone, Debug, Default)]
+struct Reuse {
+    /// `rgb` is the render of this scene, these settings applied.
+    scene: Option<(PinholeCamera, CameraWorld, Option<f64>, CameraSettings)>,
+    /// `rgb` is the same as for the previous image.
+    rgb_unchanged: bool,
+    /// The layer bytes (from layer H's data on) synthesized from `rgb` with these tables,
+    /// and their CDT counts.
+    layers: Option<(CdtKey, Vec<u8>, [u32; CDT_CHANNELS])>,
 }
 
 impl Camera {
@@ -142,6 +160,7 @@ impl Camera {
             rgb: RgbImage { width: w, height: h, data: Vec::new() },
             last_counts: [0; CDT_CHANNELS],
             settings: CameraSettings::default(),
+            reuse: Reuse::default(),
         }
     }
 
@@ -150,10 +169,39 @@ impl Camera {
         match &mut self.source {
             Some(s) => {
                 s.next_frame(self.rgb.width, self.rgb.height, &mut self.rgb.data);
+                self.rgb_replaced();
                 true
             }
             None => false,
         }
+    }
+
+    /// Fills `self.rgb` with `data` (sensor-resolution RGB, cut or zero-padded to size).
+    pub fn fill_from(&mut self, data: &[u8]) {
+        let n = self.rgb.width * self.rgb.height * 3;
+        self.rgb.data.clear();
+        self.rgb.data.extend_from_slice(&data[..n.min(data.len())]);
+        self.rgb.data.resize(n, 0);
+        self.rgb_replaced();
+    }
+
+    /// Renders `world` seen by `cam` (and the PSD wall) into `self.rgb`, unless `rgb`
+    /// already holds that picture with the current settings.
+    pub fn render_scene(&mut self, cam: &PinholeCamera, world: &CameraWorld, wall_mm: Option<f64>) {
+        let same = matches!(&self.reuse.scene, Some((c, w, m, s)) if c == cam && w == world && *m == wall_mm && *s == self.settings);
+        if same {
+            self.reuse.rgb_unchanged = true;
+            return;
+        }
+        cam.render(world, wall_mm, &mut self.rgb.data);
+        self.rgb_replaced();
+        self.reuse.scene = Some((*cam, world.clone(), wall_mm, self.settings));
+    }
+
+    /// `rgb` holds a new raw picture: applies the camera settings to it.
+    fn rgb_replaced(&mut self) {
+        self.settings.apply(&mut self.rgb.data);
+        self.reuse = Reuse::default();
     }
 
     /// Bytes of one image vector ([`Camera::build_vector`]'s `out`).
@@ -161,14 +209,29 @@ impl Camera {
         self.layout.size()
     }
 
-    /// Builds the complete image vector from `self.rgb` into `out` (at least
-    /// [`Camera::vector_size`] bytes: the shared region itself, so the vector is written
-    /// once) and advances the field counter.
-    /// The camera settings are applied to `self.rgb` first.
+    /// Builds the complete image vector from `self.rgb` (filled by one of the `fill_*`
+    /// or [`Camera::render_scene`] calls) into `out` (at least [`Camera::vector_size`]
+    /// bytes: the shared region itself, so the vector is written once) and advances the
+    /// field counter. Layers of an unchanged picture and tables are copied from the last
+    /// image instead of synthesized again (the same bytes).
     pub fn build_vector(&mut self, primitive: PrimitiveId, frame: u32, out: &mut [u8]) {
-        self.settings.apply(&mut self.rgb.data);
         self.layout.write_header(out, primitive, frame).expect("sized");
-        self.last_counts = synthesize(&self.layout, &self.rgb.data, &self.lut, self.field_counter, out);
+        let start = self.layout.layers[0].data_offset;
+        let end = self.layout.size();
+        let key = self.lut.key();
+        let unchanged = std::mem::take(&mut self.reuse.rgb_unchanged);
+        match &self.reuse.layers {
+            Some((k, bytes, counts)) if unchanged && *k == key => {
+                out[start..end].copy_from_slice(bytes);
+                self.last_counts = *counts;
+                self.layout.write_tags(out, self.field_counter, *counts).expect("sized");
+            }
+            _ => {
+                self.last_counts = synthesize(&self.layout, &self.rgb.data, &self.lut, self.field_counter, out);
+                // Kept only once a picture repeats: a moving camera pays no copy.
+                self.reuse.layers = unchanged.then(|| (key, out[start..end].to_vec(), self.last_counts));
+            }
+        }
         self.field_counter = self.field_counter.wrapping_add(1);
     }
 }

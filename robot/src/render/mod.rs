@@ -34,6 +34,8 @@ use super::kinematics::Body;
 use super::model::{Design, Part};
 use super::scene::{posture, Posture, Scene};
 
+mod spans;
+
 /// A ball lying on the floor.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ball {
@@ -223,13 +225,58 @@ impl PinholeCamera {
     }
 
     /// Renders `world` (plus the scene's PSD wall at `wall_mm` ahead of the camera)
-    /// into `rgb` (`width × height × 3`, row-major, resized if needed).
+    /// into `rgb` (`width × height × 3`, row-major, resized if needed). Each row is cut
+    /// into spans of one flat colour ([`spans`]): one pixel of a span is cast, the
+    /// pixels near an edge and those that may show the ball or its shadow are cast one
+    /// by one, so the image is the same as casting every pixel ([`Caster::pixel`]).
     pub fn render(&self, world: &CameraWorld, wall_mm: Option<f64>, rgb: &mut Vec<u8>) {
         let (w, h) = (self.width, self.height);
         rgb.resize(w * h * 3, 0);
-        let c = self.pose.position;
-        let psd_wall_x = wall_mm.map(|m| c[0] + m.max(0.0));
-        let du = scale(self.pose.left, -self.su);
+        let caster = Caster::new(self, world, wall_mm);
+        let edges = spans::Edges::new(&caster, self);
+        let mut cuts = spans::Cuts::default();
+        for (v, row) in rgb.chunks_exact_mut(w * 3).take(h).enumerate() {
+            let d0 = self.ray(0.5, v as f64 + 0.5);
+            let ball_row = caster.ball_row(d0);
+            cuts.find(&caster, &edges, v, d0, ball_row.is_some(), w);
+            cuts.paint(row, |u| caster.pixel(d0, ball_row, u));
+        }
+    }
+
+    /// [`PinholeCamera::render`] casting every pixel (the definition the spans follow).
+    #[cfg(test)]
+    pub fn render_every_pixel(&self, world: &CameraWorld, wall_mm: Option<f64>, rgb: &mut Vec<u8>) {
+        let (w, h) = (self.width, self.height);
+        rgb.resize(w * h * 3, 0);
+        let caster = Caster::new(self, world, wall_mm);
+        for (v, row) in rgb.chunks_exact_mut(w * 3).take(h).enumerate() {
+            let d0 = self.ray(0.5, v as f64 + 0.5);
+            let ball_row = caster.ball_row(d0);
+            for (u, px) in row.chunks_exact_mut(3).enumerate() {
+                px.copy_from_slice(&caster.pixel(d0, ball_row, u));
+            }
+        }
+    }
+}
+
+/// One image's ray casting: the camera, the scene and what every ray of it shares.
+pub(crate) struct Caster<'a> {
+    world: &'a CameraWorld,
+    /// Camera position and the ray step from one pixel of a row to the next.
+    c: Vec3,
+    du: Vec3,
+    psd_wall_x: Option<f64>,
+    /// The ball, its centre, camera − centre and |camera − centre|² − r².
+    ball: Option<(Ball, Vec3, Vec3, f64)>,
+    light: Vec3,
+}
+
+/// The ball as seen by one row ([`Caster::ball_row`]).
+type BallRow = Option<(Ball, Vec3, Vec3, f64)>;
+
+impl<'a> Caster<'a> {
+    fn new(cam: &'a PinholeCamera, world: &'a CameraWorld, wall_mm: Option<f64>) -> Caster<'a> {
+        let c = cam.pose.position;
         let ball = world.ball.map(|b| {
             let centre = [b.x_mm, b.y_mm, b.radius_mm];
             let oc = sub(c, centre);
@@ -239,36 +286,37 @@ impl PinholeCamera {
             let l: Vec3 = [0.3, 0.2, 1.0];
             scale(l, 1.0 / dot(l, l).sqrt())
         };
-        for v in 0..h {
-            let row = &mut rgb[v * w * 3..(v + 1) * w * 3];
-            let d0 = self.ray(0.5, v as f64 + 0.5);
-            // cheap rejection of the ball for the whole row: the plane of rays of this
-            // row (spanned by d0 and du) must pass within the radius of the centre
-            let ball_row = ball.filter(|(b, centre, _, _)| {
-                let n = cross(d0, du);
-                let nn = dot(n, n).sqrt();
-                nn > 0.0 && (dot(n, sub(*centre, c)) / nn).abs() <= b.radius_mm
-            });
-            for (u, px) in row.chunks_exact_mut(3).enumerate() {
-                let d = add(d0, scale(du, u as f64));
-                let mut colour = None;
-                if let Some((b, centre, oc, cc)) = ball_row {
-                    let aa = dot(d, d);
-                    let bb = dot(oc, d);
-                    let disc = bb * bb - aa * cc;
-                    if disc >= 0.0 {
-                        let t = (-bb - disc.sqrt()) / aa;
-                        if t > 0.0 && psd_wall_x.is_none_or(|x| d[0] <= 0.0 || t < (x - c[0]) / d[0]) {
-                            let p = add(c, scale(d, t));
-                            let n = scale(sub(p, centre), 1.0 / b.radius_mm);
-                            colour = Some(shade(b.rgb, 0.7 + 0.3 * dot(n, light).max(0.0)));
-                        }
-                    }
+        Caster { world, c, du: scale(cam.pose.left, -cam.su), psd_wall_x: wall_mm.map(|m| c[0] + m.max(0.0)), ball, light }
+    }
+
+    /// The ball if the row whose first ray is `d0` may show it: the plane of the row's
+    /// rays (spanned by d0 and du) passes within the radius of the centre.
+    fn ball_row(&self, d0: Vec3) -> BallRow {
+        self.ball.filter(|(b, centre, _, _)| {
+            let n = cross(d0, self.du);
+            let nn = dot(n, n).sqrt();
+            nn > 0.0 && (dot(n, sub(*centre, self.c)) / nn).abs() <= b.radius_mm
+        })
+    }
+
+    /// The colour of pixel `u` of the row whose first ray is `d0`.
+    fn pixel(&self, d0: Vec3, ball_row: BallRow, u: usize) -> [u8; 3] {
+        let (c, psd_wall_x) = (self.c, self.psd_wall_x);
+        let d = add(d0, scale(self.du, u as f64));
+        if let Some((b, centre, oc, cc)) = ball_row {
+            let aa = dot(d, d);
+            let bb = dot(oc, d);
+            let disc = bb * bb - aa * cc;
+            if disc >= 0.0 {
+                let t = (-bb - disc.sqrt()) / aa;
+                if t > 0.0 && psd_wall_x.is_none_or(|x| d[0] <= 0.0 || t < (x - c[0]) / d[0]) {
+                    let p = add(c, scale(d, t));
+                    let n = scale(sub(p, centre), 1.0 / b.radius_mm);
+                    return shade(b.rgb, 0.7 + 0.3 * dot(n, self.light).max(0.0));
                 }
-                let colour = colour.unwrap_or_else(|| self.background(world, c, d, psd_wall_x));
-                px.copy_from_slice(&colour);
             }
         }
+        self.background(self.world, c, d, psd_wall_x)
     }
 
     /// Colour of the floor / walls / room along ray `d` from `c` (no ball).
@@ -387,5 +435,78 @@ mod tests {
         let r = cam.ray(416.0, 160.0);
         let ang = (dot(r, pose.left) / dot(r, pose.forward)).atan().to_degrees();
         assert!((ang + 56.9 / 2.0).abs() < 1e-9);
+    }
+
+    /// A small deterministic generator for the scene sweep.
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> f64 {
+            self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn range(&mut self, lo: f64, hi: f64) -> f64 {
+            lo + (hi - lo) * self.next()
+        }
+        /// Sometimes exactly `special` (level heads and bodies make rows parallel to edges).
+        fn or(&mut self, special: f64, lo: f64, hi: f64) -> f64 {
+            if self.next() < 0.3 {
+                special
+            } else {
+                self.range(lo, hi)
+            }
+        }
+    }
+
+    fn random_scene(g: &mut Lcg) -> (PinholeCamera, CameraWorld, Option<f64>) {
+        let height = if g.next() < 0.1 { f64::INFINITY } else { g.range(40.0, 350.0) };
+        let p = Posture { pitch: g.or(0.0, -0.6, 0.6), roll: g.or(0.0, -0.4, 0.4), height_mm: height, paw_contact: [true; 4] };
+        let pose = camera_pose_from(g.or(0.0, -1.4, 0.1), g.or(0.0, -1.6, 1.6), g.or(0.0, -0.3, 0.9), &p);
+        let design = if g.next() < 0.8 { Design::Ers7 } else { Design::Ers210 };
+        let near = g.next() < 0.3;
+        let ball = (g.next() < 0.85).then(|| Ball {
+            x_mm: if near { pose.position[0] + g.range(-300.0, 600.0) } else { g.range(-2500.0, 2500.0) },
+            y_mm: if near { pose.position[1] + g.range(-300.0, 300.0) } else { g.range(-2000.0, 2000.0) },
+            radius_mm: g.range(15.0, 300.0),
+            rgb: PINK,
+        });
+        let field = match g.next() {
+            x if x < 0.15 => None,
+            x if x < 0.5 => Some(FieldBox::default()),
+            _ => {
+                let (x0, y0) = (g.range(-3000.0, 100.0), g.range(-3000.0, 100.0));
+                let line_mm = [0.0, 25.0, 300.0][(g.next() * 3.0) as usize];
+                let wall_height_mm = [0.0, 100.0, 400.0][(g.next() * 3.0) as usize];
+                Some(FieldBox { x_min: x0, x_max: x0 + g.range(300.0, 5000.0), y_min: y0, y_max: y0 + g.range(300.0, 5000.0), line_mm, wall_height_mm })
+            }
+        };
+        let world = CameraWorld { ball, field, ..CameraWorld::default() };
+        let wall = (g.next() < 0.4).then(|| g.or(0.0, 0.0, 3000.0));
+        (PinholeCamera::new(design, pose), world, wall)
+    }
+
+    #[test]
+    fn spans_give_the_same_image_as_every_pixel() {
+        let mut g = Lcg(19);
+        let (mut fast, mut slow) = (Vec::new(), Vec::new());
+        // the default scene from the standard postures first
+        let mut cases: Vec<_> = [POSTURE_STAND, POSTURE_SLEEP]
+            .iter()
+            .map(|p| (PinholeCamera::new(Design::Ers7, camera_pose(&body(p), &Scene::default())), CameraWorld::default(), None))
+            .collect();
+        cases.extend((0..400).map(|_| random_scene(&mut g)));
+        for (i, (cam, world, wall)) in cases.iter().enumerate() {
+            cam.render(world, *wall, &mut fast);
+            cam.render_every_pixel(world, *wall, &mut slow);
+            if fast != slow {
+                let k = fast.iter().zip(&slow).position(|(a, b)| a != b).unwrap() / 3;
+                panic!(
+                    "case {i}: pixel ({}, {}) differs: {:?} vs {:?}\n{cam:?}\n{world:?} {wall:?}",
+                    k % cam.width,
+                    k / cam.width,
+                    &fast[3 * k..3 * k + 3],
+                    &slow[3 * k..3 * k + 3]
+                );
+            }
+        }
     }
 }
