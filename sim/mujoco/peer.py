@@ -248,7 +248,11 @@ def run(a):
         for link in links:
             w = link.hello(not a.no_camera, a.quiet)
             link.bridge = Bridge(world.robots[link.index], w, a.gain_scale, a.seed, link.index)
-        state = open(a.state, "w") if a.state else None
+        if a.field:
+            with open(a.field, "w") as f:
+                f.write(json.dumps(world.field()) + "\n")
+        # Line by line: a live view (cargo openr run --view) follows the file.
+        state = open(a.state, "w", buffering=1) if a.state else None
         wall = time.perf_counter()
         serve(a, world, links, pushes, state)
     except (BrokenPipeError, ConnectionResetError):
@@ -362,6 +366,7 @@ def main():
     ap.add_argument("--ball", type=parse_xy, metavar="X,Y", help="put the ball here (m; robot 0 starts at 0,0 facing +x)")
     ap.add_argument("--push", action="append", default=[], metavar="T:FX,FY,FZ[@ROBOT]", help="shove a robot's trunk for 100 ms at virtual time T s with this force (N)")
     ap.add_argument("--state", metavar="FILE", help="write the ground truth (trunk and camera poses, ball) of every frame as JSON lines")
+    ap.add_argument("--field", metavar="FILE", help="write the scene's fixed shapes seen from above (planes, boxes; the ball's radius) as JSON")
     ap.add_argument("--frames", type=int, default=0, help="detach (BYE) after this many frames")
     ap.add_argument("--bench", type=float, metavar="SECONDS", help="no runtime: simulate SECONDS standing, print the real-time factor")
     ap.add_argument("--quiet", action="store_true")

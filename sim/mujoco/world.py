@@ -208,6 +208,27 @@ class World:
     def ball(self):
         return None if self.ball_q is None else self.d.qpos[self.ball_q:self.ball_q + 3]
 
+    def field(self):
+        """The scene's fixed shapes as seen from above, for a top-down drawing (the
+        view's field, docs/recording.md): each plane or box of the world body with its
+        centre, half sizes (m), heading (rad) and colour; the ball's radius."""
+        m, d, shapes = self.m, self.d, []
+        kinds = {int(mujoco.mjtGeom.mjGEOM_PLANE): "plane", int(mujoco.mjtGeom.mjGEOM_BOX): "box"}
+        for g in range(m.ngeom):
+            kind = kinds.get(int(m.geom_type[g]))
+            if m.geom_bodyid[g] != 0 or kind is None:
+                continue
+            R = d.geom_xmat[g].reshape(3, 3)
+            shapes.append({"kind": kind, "pos": [round(float(v), 5) for v in d.geom_xpos[g]],
+                           "size": [round(float(v), 5) for v in m.geom_size[g]],
+                           "yaw": round(math.atan2(R[1, 0], R[0, 0]), 5), "rgba": [round(float(v), 3) for v in m.geom_rgba[g]]})
+        field = {"shapes": shapes, "robots": len(self.robots)}
+        try:
+            field["ball_radius"] = round(float(m.geom_size[m.geom("ball").id][0]), 5)
+        except KeyError:
+            pass
+        return field
+
     def step(self):
         t = time.perf_counter()
         for _ in range(self.substeps):

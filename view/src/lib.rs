@@ -6,10 +6,14 @@
 //! else from the network: it polls `/state` (a [`snapshot`]) at the browser's frame
 //! rate and draws the robot in SVG; `/control` takes the `--control` commands (pause,
 //! resume, step, speed). [`record`] writes a run for `cargo openr view DIR`, which
-//! [`replay`] reads back and the same page plays on a timeline (docs/recording.md).
+//! [`replay`] reads back and the same page plays on a timeline, fetching it in
+//! [`chunks`] (docs/recording.md). With `--sim mujoco`, [`world`] serves one page for
+//! every robot of the world and the field.
+mod chunks;
 pub mod record;
 pub mod replay;
 mod server;
 pub mod snapshot;
+pub mod world;
 
 pub use server::View;

@@ -24,6 +24,23 @@ pub const TRACE: &str = "trace.jsonl";
 pub const CAMERA_INDEX: &str = "camera.jsonl";
 pub const SPEAKER: &str = "speaker.wav";
 pub const VIEW: &str = "view.jsonl";
+/// A world recording's (`--sim mujoco --record DIR`) ground truth and field.
+pub const TRUTH: &str = "world.jsonl";
+pub const FIELD: &str = "field.json";
+
+/// `--sim mujoco --record DIR`: DIR's manifest naming robot k's recording `robotK/`
+/// (each written by its own runtime) and the simulator's files; returns the robots'
+/// directories and the paths of the ground truth and the field for the simulator.
+pub fn create_world(dir: &Path, robots: usize) -> std::result::Result<(Vec<PathBuf>, PathBuf, PathBuf), String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("--record {}: cannot create the directory: {e}", dir.display()))?;
+    let names: Vec<String> = (0..robots).map(|k| format!("robot{k}")).collect();
+    let manifest = serde_json::json!({
+        "format": FORMAT, "version": VERSION, "frame_ms": 8, "robots": names, "world": { "truth": TRUTH, "field": FIELD },
+    });
+    let path = dir.join(MANIFEST);
+    std::fs::write(&path, format!("{}\n", serde_json::to_string_pretty(&manifest).expect("json"))).map_err(|e| format!("--record: {}: {e}", path.display()))?;
+    Ok((names.iter().map(|n| dir.join(n)).collect(), dir.join(TRUTH), dir.join(FIELD)))
+}
 
 enum Item {
     Picture { t_ms: u64, frame: u32, width: u32, height: u32, rgb: Vec<u8> },

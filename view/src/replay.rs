@@ -15,26 +15,96 @@ use serde_json::{json, Value};
 
 use crate::record::{CAMERA_INDEX, FORMAT, MANIFEST, TRACE, VERSION};
 
-/// A recording ready to serve.
+/// What `cargo openr view PATH` serves: one robot's recording, or a simulated world's
+/// (every robot's, and the simulator's ground truth).
+pub struct Replay {
+    pub source: PathBuf,
+    pub robots: Vec<Recording>,
+    pub world: Option<World>,
+}
+
+/// A world recording's field (`peer.py --field`) and ground truth, one line per frame
+/// (`peer.py --state`) in time order.
+pub struct World {
+    pub field: Value,
+    pub truth: Vec<Value>,
+}
+
+impl World {
+    /// The newest ground truth at or before `t_ms`.
+    pub fn at(&self, t_ms: u64) -> Option<&Value> {
+        let k = self.truth.partition_point(|l| l["time_ms"].as_u64().unwrap_or(0) <= t_ms);
+        self.truth.get(k.checked_sub(1)?)
+    }
+}
+
+/// One robot's recording ready to serve.
 pub struct Recording {
     /// What was opened (a directory or a trace file).
     pub source: PathBuf,
     pub design: &'static str,
     /// Snapshots in time order.
     pub states: Vec<Value>,
-    /// Camera picture n (1-based) is `pictures[n - 1]`.
+    /// Camera picture n (1-based) is `pictures[n - 1]`, taken at `picture_times[n - 1]`.
     pub pictures: Vec<PathBuf>,
+    pub picture_times: Vec<u64>,
     pub speaker: Option<PathBuf>,
 }
 
 type Res<T> = std::result::Result<T, String>;
 
-/// Opens a recording directory or a `--trace` file; the error names the file (and line).
-pub fn open(path: &Path) -> Res<Recording> {
+/// Opens a recording directory (one robot's or a world's) or a `--trace` file; the
+/// error names the file (and line).
+pub fn open(path: &Path) -> Res<Replay> {
+    let manifest = path.join(MANIFEST);
+    let world = path.is_dir() && manifest.is_file() && read_manifest(&manifest)?["robots"].is_array();
+    if !world {
+        return Ok(Replay { source: path.into(), robots: vec![open_robot(path)?], world: None });
+    }
+    let m = read_manifest(&manifest)?;
+    let mut robots = Vec::new();
+    for (k, dir) in m["robots"].as_array().into_iter().flatten().enumerate() {
+        let dir = dir.as_str().ok_or_else(|| format!("{}: robot {k} is not a directory name", manifest.display()))?;
+        robots.push(open_robot(&path.join(dir))?);
+    }
+    if robots.is_empty() {
+        return Err(format!("{}: a world of no robots", manifest.display()));
+    }
+    let file = |key: &str, default: &str| path.join(m["world"][key].as_str().unwrap_or(default));
+    let field_path = file("field", crate::record::FIELD);
+    let field = match std::fs::read_to_string(&field_path) {
+        Ok(t) => serde_json::from_str(&t).map_err(|e| format!("{}:{}: not JSON: {e}", field_path.display(), e.line()))?,
+        Err(e) => return Err(format!("{}: {}", field_path.display(), io_reason(&e))),
+    };
+    let truth = read_lines(&file("truth", crate::record::TRUTH), "time_ms", "ground-truth")?;
+    Ok(Replay { source: path.into(), robots, world: Some(World { field, truth }) })
+}
+
+fn read_manifest(path: &Path) -> Res<Value> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {}", path.display(), io_reason(&e)))?;
+    let m: Value = serde_json::from_str(&text).map_err(|e| format!("{}:{}: not JSON: {e}", path.display(), e.line()))?;
+    if m["format"] != FORMAT {
+        return Err(format!("{}: not a recording manifest (its \"format\" is {}, not \"{FORMAT}\")", path.display(), m["format"]));
+    }
+    if m["version"].as_u64() != Some(VERSION) {
+        return Err(format!("{}: recording version {} (this cargo-openr reads version {VERSION})", path.display(), m["version"]));
+    }
+    Ok(m)
+}
+
+/// One robot's recording directory, or a `--trace` file.
+fn open_robot(path: &Path) -> Res<Recording> {
     let meta = std::fs::metadata(path).map_err(|e| format!("{}: {}", path.display(), io_reason(&e)))?;
     if !meta.is_dir() {
         let (design, records) = read_trace(path, None)?;
-        return Ok(Recording { source: path.into(), design: design.name(), states: states(design, &records, &[], &[]), pictures: Vec::new(), speaker: None });
+        return Ok(Recording {
+            source: path.into(),
+            design: design.name(),
+            states: states(design, &records, &[], &[]),
+            pictures: Vec::new(),
+            picture_times: Vec::new(),
+            speaker: None,
+        });
     }
     let manifest_path = path.join(MANIFEST);
     if !manifest_path.is_file() {
@@ -43,20 +113,13 @@ pub fn open(path: &Path) -> Res<Recording> {
             path.display()
         ));
     }
-    let text = std::fs::read_to_string(&manifest_path).map_err(|e| format!("{}: {}", manifest_path.display(), io_reason(&e)))?;
-    let m: Value = serde_json::from_str(&text).map_err(|e| format!("{}:{}: not JSON: {e}", manifest_path.display(), e.line()))?;
-    if m["format"] != FORMAT {
-        return Err(format!("{}: not a recording manifest (its \"format\" is {}, not \"{FORMAT}\")", manifest_path.display(), m["format"]));
-    }
-    if m["version"].as_u64() != Some(VERSION) {
-        return Err(format!("{}: recording version {} (this cargo-openr reads version {VERSION})", manifest_path.display(), m["version"]));
-    }
+    let m = read_manifest(&manifest_path)?;
     let design =
         m["design"].as_str().and_then(Design::from_name).ok_or_else(|| format!("{}: unknown robot design {}", manifest_path.display(), m["design"]))?;
     let file = |key: &str, default: &str| path.join(m[key].as_str().unwrap_or(default));
     let (_, records) = read_trace(&file("trace", TRACE), Some(design))?;
     let camera = read_camera_index(path, &file("camera", CAMERA_INDEX))?;
-    let views = read_view(&file("view", crate::record::VIEW))?;
+    let views = read_lines(&file("view", crate::record::VIEW), "t_ms", "view")?;
     let speaker = Some(file("speaker", crate::record::SPEAKER)).filter(|p| p.is_file());
     let times: Vec<u64> = camera.iter().map(|c| c.0).collect();
     Ok(Recording {
@@ -64,6 +127,7 @@ pub fn open(path: &Path) -> Res<Recording> {
         design: design.name(),
         states: states(design, &records, &times, &views),
         pictures: camera.into_iter().map(|c| c.1).collect(),
+        picture_times: times,
         speaker,
     })
 }
@@ -154,8 +218,9 @@ fn read_camera_index(dir: &Path, index: &Path) -> Res<Vec<(u64, PathBuf)>> {
     Ok(out)
 }
 
-/// `view.jsonl` (absent: none): each line an object with `t_ms`, in time order.
-fn read_view(path: &Path) -> Res<Vec<Value>> {
+/// `view.jsonl` or a world's ground truth (absent: none): each line an object with
+/// `key` (its virtual time), in time order.
+fn read_lines(path: &Path, key: &str, what: &str) -> Res<Vec<Value>> {
     let text = match std::fs::read_to_string(path) {
         Ok(t) => t,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
@@ -167,9 +232,9 @@ fn read_view(path: &Path) -> Res<Vec<Value>> {
             continue;
         }
         let at = format!("{}:{}", path.display(), i + 1);
-        let v: Value = serde_json::from_str(line).map_err(|e| format!("{at}: not a view record: {e}"))?;
-        let t = v["t_ms"].as_u64().ok_or_else(|| format!("{at}: not a view record: it needs \"t_ms\""))?;
-        if out.last().is_some_and(|l| l["t_ms"].as_u64() > Some(t)) {
+        let v: Value = serde_json::from_str(line).map_err(|e| format!("{at}: not a {what} record: {e}"))?;
+        let t = v[key].as_u64().ok_or_else(|| format!("{at}: not a {what} record: it needs \"{key}\""))?;
+        if out.last().is_some_and(|l| l[key].as_u64() > Some(t)) {
             return Err(format!("{at}: time goes back ({t} ms)"));
         }
         out.push(v);

@@ -1,8 +1,9 @@
 //! The HTTP side of the view: `GET /` (the page, with the current snapshot inlined so
 //! it draws before any script request), `GET /state` (a snapshot as JSON), `POST
-//! /control` (one `--control` command line; the answer line back). Replaying a
-//! recording, `GET /` inlines all its moments instead, `/camera.png?n=N` is picture N
-//! and `/speaker.wav` the sound.
+//! /control` (one `--control` command line; the answer line back). A simulated world
+//! ([`crate::world`]) serves `/field`, `/world` and each robot's view under `/robot/K/`.
+//! Replaying a recording ([`crate::chunks`]), `GET /` inlines the recording's index and
+//! the moments the URL asks for; the rest come in pieces.
 use std::io::Read;
 use std::net::SocketAddr;
 use std::sync::{Arc, OnceLock};
@@ -15,12 +16,14 @@ const PAGE: &str = include_str!("page.html");
 /// Where the page takes its first snapshot from, and a recording's moments.
 const INITIAL: &str = "/*INITIAL*/null";
 const REPLAY: &str = "/*REPLAY*/null";
+const WORLD: &str = "/*WORLD*/null";
 
 /// What the server shows: the running robot or a recording.
 #[derive(Clone)]
 enum Source {
     Live(&'static Runtime),
-    Replay(Arc<crate::replay::Recording>),
+    World(Arc<crate::world::Live>),
+    Replay(Arc<crate::replay::Replay>),
 }
 
 /// A bound view server; serves once attached to a runtime.
@@ -54,14 +57,21 @@ impl sdk_runtime::observe::Observer for View {
 
 impl View {
     /// Serves `rec` (from threads of its own) instead of a running robot.
-    pub fn replay(&self, rec: crate::replay::Recording) -> std::result::Result<(), String> {
+    pub fn replay(&self, rec: crate::replay::Replay) -> std::result::Result<(), String> {
         serve(&self.server, Source::Replay(Arc::new(rec)))
+    }
+
+    /// Serves a simulated world: the robots' own views through this one.
+    pub fn world(&self, world: Arc<crate::world::Live>) -> std::result::Result<(), String> {
+        serve(&self.server, Source::World(world))
     }
 }
 
 fn serve(server: &Arc<Server>, source: Source) -> std::result::Result<(), String> {
-    // Two threads answer: a slow client (a big camera picture) holds up no other.
-    for _ in 0..2 {
+    // Two threads answer (four for a world, whose answers wait for a robot's): a slow
+    // client (a big camera picture) holds up no other.
+    let threads = if matches!(source, Source::World(_)) { 4 } else { 2 };
+    for _ in 0..threads {
         let (server, source) = (server.clone(), source.clone());
         std::thread::Builder::new()
             .name("openr-view".into())
@@ -75,19 +85,20 @@ fn serve(server: &Arc<Server>, source: Source) -> std::result::Result<(), String
     Ok(())
 }
 
-fn header(name: &str, value: &str) -> Header {
+pub(crate) fn header(name: &str, value: &str) -> Header {
     Header::from_bytes(name.as_bytes(), value.as_bytes()).expect("valid header")
 }
 
 /// JSON for inside a `<script>`: no `</` that could end it.
-fn script_json(v: &serde_json::Value) -> String {
+pub(crate) fn script_json(v: &serde_json::Value) -> String {
     v.to_string().replace("</", "<\\/")
 }
 
 fn answer(source: &Source, req: Request) {
     let res = match source {
         Source::Live(rt) => answer_live(rt, req),
-        Source::Replay(rec) => answer_replay(rec, req),
+        Source::World(w) => answer_world(w, req),
+        Source::Replay(rec) => crate::chunks::answer(rec, req),
     };
     let (req, res) = match res {
         Ok(x) => x,
@@ -96,21 +107,27 @@ fn answer(source: &Source, req: Request) {
     let _ = req.respond(res.with_header(header("Cache-Control", "no-store")));
 }
 
-type Answer = std::result::Result<(Request, Response<std::io::Cursor<Vec<u8>>>), ()>;
+pub(crate) type Answer = std::result::Result<(Request, Reply), ()>;
+pub(crate) type Reply = Response<std::io::Cursor<Vec<u8>>>;
 
-fn page(initial: &str, replay: &str) -> Response<std::io::Cursor<Vec<u8>>> {
-    let page = PAGE.replacen(INITIAL, initial, 1).replacen(REPLAY, replay, 1);
+/// The page with a snapshot, a recording's index or a world inlined.
+pub(crate) fn page(initial: &str, replay: &str, world: &str) -> Reply {
+    let page = PAGE.replacen(INITIAL, initial, 1).replacen(REPLAY, replay, 1).replacen(WORLD, world, 1);
     Response::from_string(page).with_header(header("Content-Type", "text/html; charset=utf-8"))
 }
 
-fn not_found(path: &str) -> Response<std::io::Cursor<Vec<u8>>> {
+pub(crate) fn json(v: &serde_json::Value) -> Reply {
+    Response::from_string(v.to_string()).with_header(header("Content-Type", "application/json"))
+}
+
+pub(crate) fn not_found(path: &str) -> Reply {
     Response::from_string(format!("no such page: {path}\n")).with_status_code(404)
 }
 
 fn answer_live(rt: &'static Runtime, mut req: Request) -> Answer {
     let path = req.url().split('?').next().unwrap_or("").to_string();
     let res = match (req.method(), path.as_str()) {
-        (Method::Get, "/") => page(&script_json(&crate::snapshot::take(rt)), "null"),
+        (Method::Get, "/") => page(&script_json(&crate::snapshot::take(rt)), "null", "null"),
         (Method::Get, "/state") => Response::from_string(crate::snapshot::take(rt).to_string()).with_header(header("Content-Type", "application/json")),
         (Method::Get, "/camera.png") => match camera_png(rt) {
             Ok(png) => Response::from_data(png).with_header(header("Content-Type", "image/png")),
@@ -128,33 +145,31 @@ fn answer_live(rt: &'static Runtime, mut req: Request) -> Answer {
     Ok((req, res))
 }
 
-fn answer_replay(rec: &crate::replay::Recording, req: Request) -> Answer {
+/// A world's page: robot K's view passed through (`/robot/K/...`; the world's pause
+/// button is robot 0's, as its lockstep holds every robot), the field and its truth.
+fn answer_world(w: &crate::world::Live, mut req: Request) -> Answer {
     let url = req.url().to_string();
     let (path, query) = url.split_once('?').unwrap_or((&url, ""));
-    let file = |p: &std::path::Path, kind: &str| match std::fs::read(p) {
-        Ok(bytes) => Response::from_data(bytes).with_header(header("Content-Type", kind)),
-        Err(e) => Response::from_string(format!("{}: {e}\n", p.display())).with_status_code(500),
-    };
     let res = match (req.method(), path) {
         (Method::Get, "/") => {
-            let replay = serde_json::json!({
-                "source": rec.source.display().to_string(), "design": rec.design,
-                "states": rec.states, "pictures": rec.pictures.len(), "speaker": rec.speaker.is_some(),
-            });
-            page("null", &script_json(&replay))
+            let k = query.split('&').find_map(|kv| kv.strip_prefix("robot=")).and_then(|v| v.parse::<usize>().ok()).unwrap_or(0);
+            let initial = w.ask(k, "GET", "/state", b"").ok().and_then(|(_, _, b)| serde_json::from_slice::<serde_json::Value>(&b).ok());
+            let world = serde_json::json!({ "robots": w.robots(), "robot": k, "field": w.field(), "truth": w.truth() });
+            page(&script_json(&initial.unwrap_or(serde_json::Value::Null)), "null", &script_json(&world))
         }
-        (Method::Get, "/camera.png") => {
-            let n = query.split('&').find_map(|kv| kv.strip_prefix("n=")).and_then(|v| v.parse::<usize>().ok()).unwrap_or(0);
-            match n.checked_sub(1).and_then(|i| rec.pictures.get(i)) {
-                Some(p) => file(p, "image/png"),
-                None => not_found(&url),
+        (Method::Get, "/field") => json(&w.field()),
+        (Method::Get, "/world") => json(&w.truth()),
+        (method, _) => {
+            let method = method.to_string();
+            let (k, rest) = if path == "/control" { (0, path.to_string()) } else { crate::world::robot_path(path) };
+            let mut body = Vec::new();
+            let _ = req.as_reader().take(256).read_to_end(&mut body);
+            let target = if query.is_empty() { rest } else { format!("{rest}?{query}") };
+            match w.ask(k, &method, &target, &body) {
+                Ok((code, kind, bytes)) => Response::from_data(bytes).with_status_code(code).with_header(header("Content-Type", &kind)),
+                Err(e) => Response::from_string(format!("{e}\n")).with_status_code(503),
             }
         }
-        (Method::Get, "/speaker.wav") => match &rec.speaker {
-            Some(p) => file(p, "audio/wav"),
-            None => not_found(path),
-        },
-        _ => not_found(path),
     };
     Ok((req, res))
 }

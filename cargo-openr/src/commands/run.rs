@@ -297,12 +297,6 @@ fn check_sim_options(args: &Args) -> anyhow::Result<Vec<Robot<'_>>> {
         }
         return Ok(Vec::new());
     }
-    if args.view.is_some() {
-        anyhow::bail!("--view shows the built-in robot only: drop --sim mujoco or --view");
-    }
-    if args.record.is_some() {
-        anyhow::bail!("--record records the built-in robot only: drop --sim mujoco or --record (--trace works with both)");
-    }
     if args.robot_socket.is_some() || args.robot_tcp.is_some() || args.robot_wait {
         anyhow::bail!("--sim mujoco attaches the simulator itself: drop --robot-socket/--robot-tcp/--robot-wait");
     }
@@ -343,8 +337,8 @@ fn to_child(id: &str) -> Forward {
 }
 
 /// Robot k's runtime: `run MS --sdk ROOT`, every option given to us (`to_child`), and
-/// what differs per robot.
-fn child_args(args: &Args, given: &clap::ArgMatches, k: usize, robot: &Robot, root: &Path) -> Vec<OsString> {
+/// what differs per robot (`record`: its directory of a world recording).
+fn child_args(args: &Args, given: &clap::ArgMatches, k: usize, robot: &Robot, root: &Path, record: Option<&Path>) -> Vec<OsString> {
     use clap::Args as _;
     let mut a: Vec<OsString> = vec![robot.ms.into(), "--sdk".into(), root.into()];
     a.extend(crate::ops::child_args::forwarded(&Args::augment_args(clap::Command::new("run")), given, to_child));
@@ -367,6 +361,9 @@ fn child_args(args: &Args, given: &clap::ArgMatches, k: usize, robot: &Robot, ro
         opt("--mic-wav", args.mic_wav.clone().map(Into::into));
     }
     opt("--net-bind", Some(robot.ip.to_string().into()));
+    // Each runtime serves its robot's view on loopback; the world's page (ours) passes it on.
+    opt("--view", args.view.map(|_| "127.0.0.1:0".into()));
+    opt("--record", record.map(Into::into));
     a
 }
 
@@ -374,9 +371,31 @@ fn child_args(args: &Args, given: &clap::ArgMatches, k: usize, robot: &Robot, ro
 /// simulates them all.
 fn simulate(args: &Args, given: &clap::ArgMatches, world: &[Robot], root: &Path, shell: &mut Shell) -> anyhow::Result<()> {
     let robots = world.len();
+    // The simulator's ground truth and field: the recording's, else (for the view) a
+    // scratch directory's for the run.
+    let scratch = tempfile::Builder::new().prefix("cargo-openr-world").tempdir().context("cannot create a scratch directory")?;
+    let (dirs, truth, field) = match &args.record {
+        Some(dir) => {
+            let (dirs, truth, field) = openr_view::record::create_world(dir, robots).map_err(anyhow::Error::msg)?;
+            (dirs.into_iter().map(Some).collect(), truth, field)
+        }
+        None => {
+            // The user's own --sim-arg=--state=FILE stays theirs; the view follows it.
+            let given = args.sim_args.iter().rev().find_map(|a| a.strip_prefix("--state=")).map(PathBuf::from);
+            (vec![None; robots], given.unwrap_or_else(|| scratch.path().join("world.jsonl")), scratch.path().join("field.json"))
+        }
+    };
     let mut plans = Vec::new();
     for (k, robot) in world.iter().enumerate() {
-        plans.push(child_args(args, given, k, robot, root));
+        plans.push(child_args(args, given, k, robot, root, dirs[k].as_deref()));
+    }
+    let mut view = None;
+    if let Some(addr) = args.view {
+        let server = openr_view::View::bind(addr).map_err(anyhow::Error::msg)?;
+        let live = std::sync::Arc::new(openr_view::world::Live::new(robots, field.clone(), truth.clone()));
+        server.world(live.clone()).map_err(anyhow::Error::msg)?;
+        eprintln!("Viewing http://{}/", server.addr());
+        view = Some(live); // the server's threads answer until the command ends
     }
     let mut peer_args: Vec<OsString> = Vec::new();
     if let Some(scene) = &args.scene {
@@ -390,7 +409,12 @@ fn simulate(args: &Args, given: &clap::ArgMatches, world: &[Robot], root: &Path,
         peer_args.push("--quiet".into());
     }
     peer_args.extend(args.sim_args.iter().map(Into::into));
-    let plan = sim::Plan { python: sim::python(), peer: root.join(install::SIM_DIR).join("peer.py"), peer_args, robots: plans };
+    if args.view.is_some() || args.record.is_some() {
+        // After the user's --sim-arg: the view and the recording need these files.
+        peer_args.push(format!("--state={}", truth.display()).into());
+        peer_args.push(format!("--field={}", field.display()).into());
+    }
+    let plan = sim::Plan { python: sim::python(), peer: root.join(install::SIM_DIR).join("peer.py"), peer_args, robots: plans, view };
     let what = if robots == 1 { "1 robot".to_string() } else { format!("{robots} robots") };
     shell.status("Simulating", &format!("{} in MuJoCo ({what})", args.ms_dirs[0].display()));
     sim::run(&plan)
@@ -463,7 +487,7 @@ mod tests {
         let args = super::Args::from_arg_matches(&given).unwrap();
         let world = super::check_sim_options(&args).unwrap();
         let child = |k: usize| -> Vec<String> {
-            super::child_args(&args, &given, k, &world[k], std::path::Path::new("/sdk")).iter().map(|a| a.to_string_lossy().into_owned()).collect()
+            super::child_args(&args, &given, k, &world[k], std::path::Path::new("/sdk"), None).iter().map(|a| a.to_string_lossy().into_owned()).collect()
         };
         let (c0, c1) = (child(0), child(1));
         for c in [&c0, &c1] {

@@ -16,14 +16,21 @@ pub struct Args {
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let rec = openr_view::replay::open(&args.path).map_err(anyhow::Error::msg)?;
-    let end = rec.states.last().map_or(0, |s| s["t_ms"].as_u64().unwrap_or(0));
-    let what = format!(
-        "{} ({} moments to {end} ms, {} camera pictures{})",
-        args.path.display(),
-        rec.states.len(),
-        rec.pictures.len(),
-        if rec.speaker.is_some() { ", sound" } else { "" }
-    );
+    let robots: Vec<String> = rec
+        .robots
+        .iter()
+        .map(|r| {
+            let end = r.states.last().map_or(0, |s| s["t_ms"].as_u64().unwrap_or(0));
+            format!("{} moments to {end} ms, {} camera pictures{}", r.states.len(), r.pictures.len(), if r.speaker.is_some() { ", sound" } else { "" })
+        })
+        .collect();
+    let what = match &rec.world {
+        None => format!("{} ({})", args.path.display(), robots[0]),
+        Some(w) => {
+            let each: Vec<String> = robots.iter().enumerate().map(|(k, r)| format!("robot {k}: {r}")).collect();
+            format!("{} (a world of {} robots, {} ground-truth frames; {})", args.path.display(), robots.len(), w.truth.len(), each.join("; "))
+        }
+    };
     let view = openr_view::View::bind(args.addr).map_err(|e| anyhow::anyhow!(e.replacen("--view", "--addr", 1)))?;
     view.replay(rec).map_err(anyhow::Error::msg)?;
     shell.status("Replaying", &what);

@@ -62,6 +62,9 @@ pub struct Plan {
     pub peer: PathBuf,
     pub peer_args: Vec<OsString>,
     pub robots: Vec<Vec<OsString>>,
+    /// `--view`: the world's page, told where each robot's runtime serves its own view
+    /// (the runtime's `Viewing http://ADDR/` line, kept off the console).
+    pub view: Option<Arc<openr_view::world::Live>>,
 }
 
 /// Exit status of the peer when MuJoCo or offscreen GL is not usable (`UNAVAILABLE` in peer.py).
@@ -88,23 +91,25 @@ pub fn run(plan: &Plan) -> anyhow::Result<()> {
     let sockets: Vec<PathBuf> = (0..plan.robots.len()).map(|k| dir.path().join(format!("robot{k}.sock"))).collect();
     let mut cmd = Command::new(&plan.python);
     cmd.arg(&plan.peer).args(&plan.peer_args).args(&sockets).env("MUJOCO_GL", gl_backend());
-    let mut peer = spawn(&mut cmd, false).map_err(|e| unavailable(&plan.python, &e.to_string()))?;
+    let mut peer = spawn(&mut cmd, false, false).map_err(|e| unavailable(&plan.python, &e.to_string()))?;
     let mut runtimes = Vec::new();
     let mut copiers = Vec::new();
     for (k, (args, sock)) in plan.robots.iter().zip(&sockets).enumerate() {
         let mut cmd = Command::new(&exe);
         cmd.arg("run").args(args).arg("--robot-socket").arg(sock).arg("--robot-wait");
-        let mut child = match spawn(&mut cmd, labelled) {
+        let mut child = match spawn(&mut cmd, labelled, labelled || plan.view.is_some()) {
             Ok(c) => c,
             Err(e) => {
                 stop_all(std::iter::once(&mut peer).chain(&mut runtimes));
                 return Err(e).with_context(|| format!("cannot start the runtime of robot {k}"));
             }
         };
-        if labelled {
-            let tag = format!("[robot {k}] ");
-            copiers.push(copy_lines(child.stdout.take().unwrap(), tag.clone(), false, console.clone()));
-            copiers.push(copy_lines(child.stderr.take().unwrap(), tag, true, console.clone()));
+        let tag = if labelled { format!("[robot {k}] ") } else { String::new() };
+        if let Some(out) = child.stdout.take() {
+            copiers.push(copy_lines(out, tag.clone(), None, console.clone()));
+        }
+        if let Some(err) = child.stderr.take() {
+            copiers.push(copy_lines(err, tag, Some(plan.view.clone().map(|v| (k, v))), console.clone()));
         }
         runtimes.push(child);
     }
@@ -123,9 +128,12 @@ pub fn run(plan: &Plan) -> anyhow::Result<()> {
 
 /// Children end with us (PR_SET_PDEATHSIG), and leave Ctrl-C to the runtimes: they stop
 /// on it, the peer then sees their connections close and ends by itself.
-fn spawn(cmd: &mut Command, piped: bool) -> std::io::Result<Child> {
-    if piped {
-        cmd.stdout(Stdio::piped()).stderr(Stdio::piped());
+fn spawn(cmd: &mut Command, stdout: bool, stderr: bool) -> std::io::Result<Child> {
+    if stdout {
+        cmd.stdout(Stdio::piped());
+    }
+    if stderr {
+        cmd.stderr(Stdio::piped());
     }
     // SAFETY: prctl is async-signal-safe; nothing else runs between fork and exec.
     unsafe {
@@ -170,10 +178,22 @@ fn stop_all<'a>(children: impl IntoIterator<Item = &'a mut Child>) {
     }
 }
 
-/// Copies a robot's output line by line with its tag, so lines of robots never mix.
-fn copy_lines(from: impl Read + Send + 'static, tag: String, stderr: bool, console: Arc<Mutex<()>>) -> std::thread::JoinHandle<()> {
+/// Robot k's stderr, and the world view to tell where the robot's own view listens.
+type Stderr = Option<Option<(usize, Arc<openr_view::world::Live>)>>;
+
+/// Copies a robot's output line by line with its tag, so lines of robots never mix;
+/// its `Viewing` line goes to the world's view instead (`stderr`).
+fn copy_lines(from: impl Read + Send + 'static, tag: String, stderr: Stderr, console: Arc<Mutex<()>>) -> std::thread::JoinHandle<()> {
     std::thread::spawn(move || {
         for line in BufReader::new(from).split(b'\n').map_while(Result::ok) {
+            if let Some(Some((k, view))) = &stderr {
+                let addr = std::str::from_utf8(&line).ok().and_then(|l| l.strip_prefix("Viewing http://")?.strip_suffix('/')?.parse().ok());
+                if let Some(addr) = addr {
+                    view.robot_listening(*k, addr);
+                    continue;
+                }
+            }
+            let stderr = stderr.is_some();
             let _guard = console.lock().unwrap();
             let mut text = tag.clone().into_bytes();
             text.extend_from_slice(&line);

@@ -28,3 +28,4 @@ mod stick;
 mod support;
 mod tools;
 mod view;
+mod world_view;

@@ -136,7 +136,7 @@ fn a_standing_robot_stays_up_and_a_pushed_one_reports_it_through_the_acceleromet
 }
 
 /// movehead's head postures with imagesave's camera observer in one Memory Stick.
-fn head_camera_ms() -> (Built, Built) {
+pub(crate) fn head_camera_ms() -> (Built, Built) {
     let head = build("movehead");
     let cam = build("imagesave");
     let conf = head.ms().join("OPEN-R/MW/CONF");

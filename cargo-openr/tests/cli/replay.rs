@@ -12,7 +12,7 @@ use crate::audio::wav_data;
 use crate::support::{build, copy_tree, exe, read_trace, run_ms, sdk_root, Built};
 use crate::view::{attr_of_id, cell, chromium, chromium_with, http, text_of_id};
 
-const LEGS: [&str; 4] = ["PRM:/r2/c1-Joint2:21", "PRM:/r2/c1/c2/c3-Joint2:23", "PRM:/r3/c1-Joint2:31", "PRM:/r5/c1/c2/c3-Joint2:53"];
+pub(crate) const LEGS: [&str; 4] = ["PRM:/r2/c1-Joint2:21", "PRM:/r2/c1/c2/c3-Joint2:23", "PRM:/r3/c1-Joint2:31", "PRM:/r5/c1/c2/c3-Joint2:53"];
 
 /// movelegs with imagesave's camera object added: legs that move and a camera.
 fn legs_with_camera() -> Built {
@@ -29,10 +29,10 @@ fn legs_with_camera() -> Built {
 }
 
 /// `cargo openr view PATH` serving until dropped.
-struct Viewer {
+pub(crate) struct Viewer {
     child: Child,
-    stderr: Arc<Mutex<String>>,
-    addr: String,
+    pub(crate) stderr: Arc<Mutex<String>>,
+    pub(crate) addr: String,
 }
 
 impl Drop for Viewer {
@@ -42,7 +42,7 @@ impl Drop for Viewer {
     }
 }
 
-fn spawn_view(path: &Path) -> Viewer {
+pub(crate) fn spawn_view(path: &Path) -> Viewer {
     let mut child = Command::new(exe()).arg("view").arg(path).stdout(Stdio::null()).stderr(Stdio::piped()).spawn().unwrap();
     let stderr = Arc::new(Mutex::new(String::new()));
     let (mut pipe, sink) = (child.stderr.take().unwrap(), stderr.clone());
@@ -69,7 +69,7 @@ fn spawn_view(path: &Path) -> Viewer {
 }
 
 /// The body of `GET path` (binary).
-fn get_bytes(addr: &str, path: &str) -> Vec<u8> {
+pub(crate) fn get_bytes(addr: &str, path: &str) -> Vec<u8> {
     use std::io::Write;
     let mut s = std::net::TcpStream::connect(addr).unwrap();
     write!(s, "GET {path} HTTP/1.0\r\n\r\n").unwrap();
@@ -80,19 +80,19 @@ fn get_bytes(addr: &str, path: &str) -> Vec<u8> {
 }
 
 /// The virtual times of the trace's records, each once, in order.
-fn moments(trace: &[serde_json::Value]) -> Vec<u64> {
+pub(crate) fn moments(trace: &[serde_json::Value]) -> Vec<u64> {
     let mut t: Vec<u64> = trace.iter().map(|r| r["t_ms"].as_u64().unwrap()).collect();
     t.dedup();
     t
 }
 
 /// The trace's newest sensor record at or before `t_ms`.
-fn sensor_at(trace: &[serde_json::Value], t_ms: u64) -> &serde_json::Value {
+pub(crate) fn sensor_at(trace: &[serde_json::Value], t_ms: u64) -> &serde_json::Value {
     trace.iter().filter(|r| r["kind"] == "sensor" && r["t_ms"].as_u64().unwrap() <= t_ms).last().expect("a sensor record before t")
 }
 
 /// The page at `query` shows moment `t` with the legs' angles of the trace at `t`.
-fn assert_shows(dom: &str, trace: &[serde_json::Value], t: u64, what: &str) {
+pub(crate) fn assert_shows(dom: &str, trace: &[serde_json::Value], t: u64, what: &str) {
     assert_eq!(text_of_id(dom, "t_ms"), t.to_string(), "{what}: the page's virtual time");
     let rec = sensor_at(trace, t);
     for loc in LEGS {
@@ -226,7 +226,7 @@ fn a_trace_alone_replays_without_camera() {
 }
 
 /// `cargo openr view PATH` fails with a message containing every one of `want`.
-fn fails_with(path: &Path, want: &[&str]) {
+pub(crate) fn fails_with(path: &Path, want: &[&str]) {
     let out = Command::new(exe()).arg("view").arg(path).output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{}: {err}", path.display());
@@ -305,8 +305,53 @@ fn record_refuses_what_it_cannot_record() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_ne!(out.status.code(), Some(0), "{err}");
     assert!(err.contains("--record") && err.contains("--trace") && err.contains("cannot be used with"), "{err}");
-    let out = Command::new(exe()).arg("run").arg(dir.path()).args(["--sim", "mujoco", "--record", "r"]).output().unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_ne!(out.status.code(), Some(0), "{err}");
-    assert!(err.contains("--record records the built-in robot only"), "{err}");
+}
+
+/// The recording's index as the page inlines it (`const REPLAY = …;`).
+fn inlined_index(page: &str) -> serde_json::Value {
+    let json = page.split("const REPLAY = ").nth(1).and_then(|r| r.split(";\n").next()).expect("the inlined index");
+    serde_json::from_str(json).unwrap()
+}
+
+#[test]
+fn a_long_recording_is_served_in_chunks() {
+    let p = build("movelegs");
+    let dir = tempfile::tempdir().unwrap();
+    let rec = dir.path().join("rec");
+    let out = run_ms(&p.ms(), &["--speed", "max", "--for", "12s", "--record", rec.to_str().unwrap()]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let trace = read_trace(&rec.join("trace.jsonl"));
+    let times = moments(&trace);
+    let view = spawn_view(&rec);
+    let (code, page) = http(&view.addr, "GET", "/", "");
+    assert_eq!(code, 200);
+    let index = inlined_index(&page);
+    let chunk = index["chunk"].as_u64().unwrap() as usize;
+    let r = &index["robots"][0];
+    assert_eq!(r["count"].as_u64().unwrap() as usize, times.len());
+    let chunks = times.len().div_ceil(chunk);
+    assert!(chunks >= 4, "12 s make several chunks of {chunk} moments: {chunks}");
+    let starts: Vec<u64> = r["starts"].as_array().unwrap().iter().map(|v| v.as_u64().unwrap()).collect();
+    assert_eq!(starts, times.iter().step_by(chunk).copied().collect::<Vec<_>>(), "each chunk's first moment");
+    let keys: Vec<&String> = index["loaded"].as_object().unwrap().keys().collect();
+    assert_eq!(keys, ["0"], "only the first chunk comes with the page");
+    // A chunk: its moments, in order.
+    let (code, body) = http(&view.addr, "GET", "/chunk?n=2", "");
+    assert_eq!(code, 200, "{body}");
+    let part: Vec<serde_json::Value> = serde_json::from_str(&body).unwrap();
+    let shown: Vec<u64> = part.iter().map(|s| s["t_ms"].as_u64().unwrap()).collect();
+    assert_eq!(shown, times[2 * chunk..3 * chunk]);
+    let (code, _) = http(&view.addr, "GET", &format!("/chunk?n={chunks}"), "");
+    assert_eq!(code, 404, "no chunk past the end");
+    // Seeking late in the run inlines that moment's chunk, not the first.
+    let t = times[3 * chunk + chunk / 2];
+    let (_, page) = http(&view.addr, "GET", &format!("/?t={t}"), "");
+    let keys: Vec<String> = inlined_index(&page)["loaded"].as_object().unwrap().keys().cloned().collect();
+    assert_eq!(keys, ["3"], "the chunk of {t} ms");
+    assert_shows(&chromium(&format!("http://{}/?t={t}", view.addr), None), &trace, t, "seek");
+    // Playing from the start fetches the chunks it reaches.
+    let played = chromium_with(&format!("http://{}/?t=0&play=1", view.addr), None, &["--virtual-time-budget=6000"]);
+    let shown: u64 = text_of_id(&played, "t_ms").parse().unwrap();
+    assert!(shown > times[2 * chunk], "playing went past the first two chunks: {shown} ms");
+    assert_shows(&played, &trace, shown, "play");
 }
