@@ -50,6 +50,7 @@ UNAVAILABLE = 3
 try:
     from bridge import GAIN_SCALE, Bridge, Frame, stand  # noqa: E402  (these import numpy and mujoco)
     from world import CAMERA_H, CAMERA_W, DEFAULT_SCENE, FRAME_S, RenderError, SceneError, World, wait  # noqa: E402
+    from fieldcam import FieldCamera  # noqa: E402
 except (ImportError, RuntimeError) as e:  # RuntimeError: mujoco rejects MUJOCO_GL
     print(f"mujoco peer: error: {sys.executable} cannot import MuJoCo: {e}", file=sys.stderr)
     sys.exit(UNAVAILABLE)
@@ -242,7 +243,7 @@ def run(a):
     targets = [(p, None) for p in a.socket] or [(None, a.tcp)]
     pushes = Pushes(a.push, max(a.robots or 1, len(targets)))  # option errors before the world
     world = make_world(a, len(targets))  # scene errors before attaching
-    links, state, wall = [], None, time.perf_counter()
+    links, state, fieldcam, wall = [], None, None, time.perf_counter()
     try:
         links = [Link(connect(p, t), k) for k, (p, t) in enumerate(targets)]
         for link in links:
@@ -253,8 +254,10 @@ def run(a):
                 f.write(json.dumps(world.field()) + "\n")
         # Line by line: a live view (cargo openr run --view) follows the file.
         state = open(a.state, "w", buffering=1) if a.state else None
+        if a.field_camera or a.field_pictures:
+            fieldcam = FieldCamera(world, a.field_camera, a.field_pictures)
         wall = time.perf_counter()
-        serve(a, world, links, pushes, state)
+        serve(a, world, links, pushes, state, fieldcam)
     except (BrokenPipeError, ConnectionResetError):
         pass  # a runtime ended between its FRAME and our answer
     finally:
@@ -262,6 +265,8 @@ def run(a):
             link.close()
         if state:
             state.close()
+        if fieldcam:
+            fieldcam.close()
         report = world.report(time.perf_counter() - wall)
         world.close()
         if not a.quiet:
@@ -269,7 +274,7 @@ def run(a):
     return 0
 
 
-def serve(a, world, links, pushes, state):
+def serve(a, world, links, pushes, state, fieldcam=None):
     """The lockstep: one FRAME from every attached runtime, one physics step, answers.
 
     Pictures show the state a camera frame begins with. A FRAME announcing a picture in
@@ -307,6 +312,8 @@ def serve(a, world, links, pushes, state):
                 link.peer.send(rp.READINGS, f.frame, readings)
         if state:
             state.write(state_line(world, live[0][1].frame, t_ms, poses) + "\n")
+        if fieldcam and fieldcam.due(t_ms):
+            fieldcam.shoot(world.d, live[0][1].frame, t_ms)
         if a.frames and world.frames >= a.frames:
             for link, f in live:
                 link.peer.send(rp.BYE, f.frame, struct.pack("<H", 4) + b"done")
@@ -367,6 +374,8 @@ def main():
     ap.add_argument("--push", action="append", default=[], metavar="T:FX,FY,FZ[@ROBOT]", help="shove a robot's trunk for 100 ms at virtual time T s with this force (N)")
     ap.add_argument("--state", metavar="FILE", help="write the ground truth (trunk and camera poses, ball) of every frame as JSON lines")
     ap.add_argument("--field", metavar="FILE", help="write the scene's fixed shapes seen from above (planes, boxes; the ball's radius) as JSON")
+    ap.add_argument("--field-camera", metavar="FILE", help="the field camera's newest picture (PNG, replaced 5 times a second of virtual time)")
+    ap.add_argument("--field-pictures", metavar="DIR", help="keep every picture of the field camera here (NNNNNN.png, index.jsonl)")
     ap.add_argument("--frames", type=int, default=0, help="detach (BYE) after this many frames")
     ap.add_argument("--bench", type=float, metavar="SECONDS", help="no runtime: simulate SECONDS standing, print the real-time factor")
     ap.add_argument("--quiet", action="store_true")

@@ -4,7 +4,8 @@
 //! holding the moments the URL asks for (`?robot=K&t=MS&back=N&step=N`); the page
 //! fetches the others as it goes (`/robot/K/chunk?n=C`: the moments C × CHUNK … of robot
 //! K, each with the world's ground truth at its time). `/robot/K/camera.png?n=N` is
-//! picture N, `?t=MS` the newest one taken by then; `/robot/K/speaker.wav` the sound.
+//! picture N, `?t=MS` the newest one taken by then; `/robot/K/speaker.wav` the sound;
+//! `/field.png?t=MS` a world's field camera's newest picture by then.
 //! A one-robot recording answers the same without `/robot/K` (robot 0).
 use serde_json::{json, Value};
 use tiny_http::{Method, Request, Response};
@@ -59,6 +60,7 @@ fn index(rec: &Replay, k: usize, query: &str) -> Value {
     json!({
         "source": rec.source.display().to_string(), "chunk": CHUNK, "robot": k, "robots": robots,
         "world": rec.world.as_ref().map(|w| w.field.clone()), "loaded": loaded,
+        "field_pictures": rec.world.as_ref().map_or(0, |w| w.pictures.len()),
     })
 }
 
@@ -70,6 +72,16 @@ pub(crate) fn answer(rec: &Replay, req: Request) -> Answer {
         Ok(bytes) => Response::from_data(bytes).with_header(header("Content-Type", kind)),
         Err(e) => Response::from_string(format!("{}: {e}\n", p.display())).with_status_code(500),
     };
+    if path == "/field.png" {
+        // The field camera's newest picture by `?t=MS`.
+        let t = param::<u64>(query, "t").unwrap_or(0);
+        let pictures = rec.world.as_ref().map_or(&[][..], |w| &w.pictures[..]);
+        let res = match pictures.partition_point(|(pt, _)| *pt <= t).checked_sub(1) {
+            Some(i) => file(&pictures[i].1, "image/png"),
+            None => not_found(&url),
+        };
+        return Ok((req, res));
+    }
     let Some(robot) = rec.robots.get(k) else {
         let res = not_found(path);
         return Ok((req, res));

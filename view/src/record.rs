@@ -27,19 +27,23 @@ pub const VIEW: &str = "view.jsonl";
 /// A world recording's (`--sim mujoco --record DIR`) ground truth and field.
 pub const TRUTH: &str = "world.jsonl";
 pub const FIELD: &str = "field.json";
+/// The field camera's pictures (`peer.py --field-pictures`) and their index.
+pub const FIELD_CAMERA: &str = "field";
+pub const FIELD_CAMERA_INDEX: &str = "field/index.jsonl";
 
 /// `--sim mujoco --record DIR`: DIR's manifest naming robot k's recording `robotK/`
 /// (each written by its own runtime) and the simulator's files; returns the robots'
-/// directories and the paths of the ground truth and the field for the simulator.
-pub fn create_world(dir: &Path, robots: usize) -> std::result::Result<(Vec<PathBuf>, PathBuf, PathBuf), String> {
+/// directories and the paths of the ground truth, the field and the field camera's
+/// pictures for the simulator.
+pub fn create_world(dir: &Path, robots: usize) -> std::result::Result<(Vec<PathBuf>, [PathBuf; 3]), String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("--record {}: cannot create the directory: {e}", dir.display()))?;
     let names: Vec<String> = (0..robots).map(|k| format!("robot{k}")).collect();
     let manifest = serde_json::json!({
-        "format": FORMAT, "version": VERSION, "frame_ms": 8, "robots": names, "world": { "truth": TRUTH, "field": FIELD },
+        "format": FORMAT, "version": VERSION, "frame_ms": 8, "robots": names, "world": { "truth": TRUTH, "field": FIELD, "field_camera": FIELD_CAMERA_INDEX },
     });
     let path = dir.join(MANIFEST);
     std::fs::write(&path, format!("{}\n", serde_json::to_string_pretty(&manifest).expect("json"))).map_err(|e| format!("--record: {}: {e}", path.display()))?;
-    Ok((names.iter().map(|n| dir.join(n)).collect(), dir.join(TRUTH), dir.join(FIELD)))
+    Ok((names.iter().map(|n| dir.join(n)).collect(), [dir.join(TRUTH), dir.join(FIELD), dir.join(FIELD_CAMERA)]))
 }
 
 enum Item {

@@ -28,6 +28,8 @@ pub struct Replay {
 pub struct World {
     pub field: Value,
     pub truth: Vec<Value>,
+    /// The field camera's pictures (`peer.py --field-pictures`): (time_ms, file).
+    pub pictures: Vec<(u64, PathBuf)>,
 }
 
 impl World {
@@ -77,7 +79,18 @@ pub fn open(path: &Path) -> Res<Replay> {
         Err(e) => return Err(format!("{}: {}", field_path.display(), io_reason(&e))),
     };
     let truth = read_lines(&file("truth", crate::record::TRUTH), "time_ms", "ground-truth")?;
-    Ok(Replay { source: path.into(), robots, world: Some(World { field, truth }) })
+    let index = file("field_camera", crate::record::FIELD_CAMERA_INDEX);
+    let mut pictures = Vec::new();
+    for (i, p) in read_lines(&index, "time_ms", "field camera")?.into_iter().enumerate() {
+        let at = format!("{}:{}", index.display(), i + 1);
+        let name = p["file"].as_str().ok_or_else(|| format!("{at}: not a field camera record: it needs \"file\""))?;
+        let png = index.parent().unwrap_or(path).join(name);
+        if !png.is_file() {
+            return Err(format!("{at}: the picture {} is missing", png.display()));
+        }
+        pictures.push((p["time_ms"].as_u64().unwrap_or(0), png));
+    }
+    Ok(Replay { source: path.into(), robots, world: Some(World { field, truth, pictures }) })
 }
 
 fn read_manifest(path: &Path) -> Res<Value> {

@@ -159,6 +159,10 @@ fn answer_world(w: &crate::world::Live, mut req: Request) -> Answer {
         }
         (Method::Get, "/field") => json(&w.field()),
         (Method::Get, "/world") => json(&w.truth()),
+        (Method::Get, "/field.png") => match w.camera() {
+            Some(png) => Response::from_data(png).with_header(header("Content-Type", "image/png")),
+            None => Response::from_string("the field camera has taken no picture yet\n").with_status_code(503),
+        },
         (method, _) => {
             let method = method.to_string();
             let (k, rest) = if path == "/control" { (0, path.to_string()) } else { crate::world::robot_path(path) };

@@ -3,7 +3,8 @@
 //! server, in the `cargo openr run` process, passes `/robot/K/...` on to robot K's and
 //! serves the field: `/field` (the scene's fixed shapes, written once by the MuJoCo
 //! peer, `peer.py --field`) and `/world` (the newest line of the peer's ground truth,
-//! `peer.py --state`, followed as the peer writes it).
+//! `peer.py --state`, followed as the peer writes it) and `/field.png` (the field
+//! camera's newest picture, `peer.py --field-camera`).
 use std::io::{Read, Write};
 use std::net::{SocketAddr, TcpStream};
 use std::path::PathBuf;
@@ -18,6 +19,7 @@ pub struct Live {
     robots: Mutex<Vec<Option<SocketAddr>>>,
     field: PathBuf,
     truth: Mutex<Tail>,
+    camera: PathBuf,
 }
 
 /// The newest whole line of a file that grows.
@@ -29,8 +31,15 @@ struct Tail {
 }
 
 impl Live {
-    pub fn new(robots: usize, field: PathBuf, truth: PathBuf) -> Live {
-        Live { robots: Mutex::new(vec![None; robots]), field, truth: Mutex::new(Tail { path: truth, file: None, partial: Vec::new(), last: None }) }
+    /// `camera`: the field camera's newest picture (PNG, replaced whole by the peer).
+    pub fn new(robots: usize, field: PathBuf, truth: PathBuf, camera: PathBuf) -> Live {
+        let truth = Mutex::new(Tail { path: truth, file: None, partial: Vec::new(), last: None });
+        Live { robots: Mutex::new(vec![None; robots]), field, truth, camera }
+    }
+
+    /// The field camera's newest picture, if it took one yet.
+    pub fn camera(&self) -> Option<Vec<u8>> {
+        std::fs::read(&self.camera).ok()
     }
 
     pub fn robots(&self) -> usize {
@@ -135,7 +144,7 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("openr-view-tail-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("truth.jsonl");
-        let live = Live::new(1, dir.join("none.json"), path.clone());
+        let live = Live::new(1, dir.join("none.json"), path.clone(), dir.join("none.png"));
         assert_eq!(live.truth(), Value::Null, "no file yet");
         let mut f = std::fs::File::create(&path).unwrap();
         f.write_all(b"{\"frame\":1}\n{\"frame\":2}\n{\"fra").unwrap();
@@ -144,5 +153,6 @@ mod tests {
         assert_eq!(live.truth()["frame"], 3);
         assert_eq!(live.truth()["frame"], 3, "nothing new: the same line");
         assert_eq!(live.field(), Value::Null);
+        assert_eq!(live.camera(), None);
     }
 }

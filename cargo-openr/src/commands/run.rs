@@ -374,9 +374,11 @@ fn simulate(args: &Args, given: &clap::ArgMatches, world: &[Robot], root: &Path,
     // The simulator's ground truth and field: the recording's, else (for the view) a
     // scratch directory's for the run.
     let scratch = tempfile::Builder::new().prefix("cargo-openr-world").tempdir().context("cannot create a scratch directory")?;
+    let mut pictures = None;
     let (dirs, truth, field) = match &args.record {
         Some(dir) => {
-            let (dirs, truth, field) = openr_view::record::create_world(dir, robots).map_err(anyhow::Error::msg)?;
+            let (dirs, [truth, field, field_camera]) = openr_view::record::create_world(dir, robots).map_err(anyhow::Error::msg)?;
+            pictures = Some(field_camera);
             (dirs.into_iter().map(Some).collect(), truth, field)
         }
         None => {
@@ -392,7 +394,8 @@ fn simulate(args: &Args, given: &clap::ArgMatches, world: &[Robot], root: &Path,
     let mut view = None;
     if let Some(addr) = args.view {
         let server = openr_view::View::bind(addr).map_err(anyhow::Error::msg)?;
-        let live = std::sync::Arc::new(openr_view::world::Live::new(robots, field.clone(), truth.clone()));
+        let camera = scratch.path().join("field.png");
+        let live = std::sync::Arc::new(openr_view::world::Live::new(robots, field.clone(), truth.clone(), camera));
         server.world(live.clone()).map_err(anyhow::Error::msg)?;
         eprintln!("Viewing http://{}/", server.addr());
         view = Some(live); // the server's threads answer until the command ends
@@ -413,6 +416,12 @@ fn simulate(args: &Args, given: &clap::ArgMatches, world: &[Robot], root: &Path,
         // After the user's --sim-arg: the view and the recording need these files.
         peer_args.push(format!("--state={}", truth.display()).into());
         peer_args.push(format!("--field={}", field.display()).into());
+    }
+    if args.view.is_some() {
+        peer_args.push(format!("--field-camera={}", scratch.path().join("field.png").display()).into());
+    }
+    if let Some(dir) = &pictures {
+        peer_args.push(format!("--field-pictures={}", dir.display()).into());
     }
     let plan = sim::Plan { python: sim::python(), peer: root.join(install::SIM_DIR).join("peer.py"), peer_args, robots: plans, view };
     let what = if robots == 1 { "1 robot".to_string() } else { format!("{robots} robots") };

@@ -92,6 +92,14 @@ fn the_live_page_shows_every_robot_the_field_and_the_cameras() {
     assert_eq!((w, h), (416, 320), "the ERS-7 camera's resolution");
     let ball = px.iter().filter(|p| orange(**p)).count();
     assert!(ball > 100, "robot 0 faces the ball 0.8 m ahead: {ball} orange pixels");
+    // The field camera: the whole field rendered by MuJoCo, the ball on it.
+    assert!(attr_of_id(&dom0, "field-camera", "src").starts_with("/field.png"));
+    let (w, h, px) = pixels(&get_bytes(&addr, "/field.png"));
+    assert_eq!((w, h), (480, 320));
+    let green = px.iter().filter(|p| p[1] as u32 > 2 * p[0] as u32 && p[1] as u32 > 2 * p[2] as u32).count();
+    assert!(green > w * h / 3, "mostly carpet: {green} green pixels of {}", w * h);
+    let ball = px.iter().filter(|p| orange(**p)).count();
+    assert!(ball >= 3, "the ball on the field: {ball} orange pixels");
     control(&addr, "resume");
     let out = run.wait(Duration::from_secs(300));
     assert_eq!(out.code, Some(0), "{}", out.stderr);
@@ -131,6 +139,12 @@ fn a_world_recording_replays_every_robot_and_the_field() {
     assert_eq!(attr_of_id(&dom, "thumb-0", "src"), format!("/robot/0/camera.png?t={t}"));
     let newest = pictures.iter().filter(|c| c["t_ms"].as_u64().unwrap() <= t).last().unwrap();
     assert_eq!(get_bytes(&view.addr, &format!("/robot/0/camera.png?t={t}")), std::fs::read(rec.join("robot0").join(newest["file"].as_str().unwrap())).unwrap());
+    // The field camera's newest picture by then.
+    let field = read_trace(&rec.join("field/index.jsonl"));
+    assert!(field.len() >= 10, "the field camera, 5 pictures a second: {}", field.len());
+    assert_eq!(attr_of_id(&dom, "field-camera", "src"), format!("/field.png?t={t}"));
+    let newest = field.iter().filter(|c| c["time_ms"].as_u64().unwrap() <= t).last().unwrap();
+    assert_eq!(get_bytes(&view.addr, &format!("/field.png?t={t}")), std::fs::read(rec.join("field").join(newest["file"].as_str().unwrap())).unwrap());
     // Step on robot 1's timeline: its next moment.
     let stepped = chromium(&format!("http://{}/?robot=1&t={t}&step=1", view.addr), None);
     assert_shows(&stepped, &trace1, times[k + 1], "robot 1, step");
@@ -139,6 +153,9 @@ fn a_world_recording_replays_every_robot_and_the_field() {
     // the carpet (6 x 4 m, drawn to scale).
     let shot = dir.path().join("replay.png");
     chromium(&format!("http://{}/?robot=0&t={t}", view.addr), Some(&shot));
+    if let Ok(to) = std::env::var("OPENR_WORLD_SCREENSHOT") {
+        std::fs::copy(&shot, to).unwrap(); // docs/world-view.png
+    }
     let (w, h, px) = pixels(&std::fs::read(&shot).unwrap());
     // The field is the page's first panel, top left; the camera pictures are elsewhere.
     let region = |x: usize, y: usize| x < 620 && y < 500;
@@ -190,6 +207,10 @@ fn bad_world_recordings_are_clear_errors() {
     std::fs::write(d.join("world.jsonl"), "{\"time_ms\":8,\"robots\":[]}\n{\"robots\":[]}\n").unwrap();
     fails_with(&d, &[&format!("{}:2: not a ground-truth record: it needs \"time_ms\"", d.join("world.jsonl").display())]);
     std::fs::write(d.join("world.jsonl"), "{\"time_ms\":8,\"robots\":[]}\n").unwrap();
+    std::fs::create_dir_all(d.join("field")).unwrap();
+    std::fs::write(d.join("field/index.jsonl"), "{\"n\":1,\"time_ms\":200,\"frame\":25,\"file\":\"000001.png\"}\n").unwrap();
+    fails_with(&d, &[&format!("{}:1: the picture", d.join("field/index.jsonl").display()), "000001.png is missing"]);
+    std::fs::write(d.join("field/000001.png"), b"\x89PNG").unwrap();
     {
         let v = spawn_view(&d);
         assert!(v.stderr.lock().unwrap().contains("a world of 1 robots, 1 ground-truth frames"), "{}", v.stderr.lock().unwrap());
