@@ -31,7 +31,9 @@
 //!   changes while clamped (not every frame of a constant out-of-range command).
 //! * Held state: a primitive whose commands ran out keeps its last target.
 
-use std::collections::{BTreeMap, HashMap, VecDeque};
+use std::collections::{BTreeMap, VecDeque};
+
+use rustc_hash::FxHashMap as HashMap;
 
 use super::model::{PrimitiveId, PrimitiveKind, RobotModel};
 use super::sync::{PartState, SyncKeys, SYNC_KEY_UNDEF};
@@ -176,7 +178,7 @@ fn fits(values: &CommandValues, kind: PrimitiveKind) -> Result<(), IgnoreReason>
 
 impl Effector {
     pub fn new(model: RobotModel) -> Effector {
-        Effector { model, queues: BTreeMap::new(), seq: 0, targets: HashMap::new(), immediate: Vec::new(), clamping: HashMap::new() }
+        Effector { model, queues: BTreeMap::new(), seq: 0, targets: HashMap::default(), immediate: Vec::new(), clamping: HashMap::default() }
     }
 
     /// Queues a parsed vector on `connection` (one call per data item of a NOTIFY, in

@@ -38,7 +38,9 @@ pub mod sync;
 pub mod trace;
 pub mod vectors;
 
-use std::collections::{BTreeSet, HashMap};
+use std::collections::BTreeSet;
+
+use rustc_hash::FxHashMap as HashMap;
 
 pub use effector::{Completed, ConnectionId, Started, Token};
 pub use model::{Design, Gain, PrimitiveId, RobotModel, PRIMITIVE_ID_UNDEF};
@@ -185,7 +187,7 @@ impl VirtualRobot {
             pending_trace: Vec::new(),
             trace_enabled: true,
             camera: camera::Camera::new(design),
-            sensor_override: HashMap::new(),
+            sensor_override: HashMap::default(),
             external_rgb: None,
         }
     }

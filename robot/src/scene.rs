@@ -37,7 +37,7 @@
 //! * `wall_mm` is the horizontal distance from the sensors to a wall ahead (the same
 //!   for head and chest — the small offset between them is ignored).
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::f64::consts::PI;
 
 use super::kinematics::Body;
@@ -294,7 +294,8 @@ impl SensorSynth {
             }
         };
 
-        let mut out = HashMap::new();
+        let mut out = HashMap::default();
+        out.reserve(24);
         for prim in body.model().primitives() {
             let PrimitiveKind::Sensor(kind) = prim.kind else { continue };
             let v = match (prim.part, kind) {

@@ -19,6 +19,9 @@ pub struct Args {
     /// Rewrite the part of FILE between the bench markers with this run's table
     #[arg(long, value_name = "FILE")]
     readme: Option<PathBuf>,
+    /// Measure only these groups of figures (comma-separated; default: all)
+    #[arg(long, value_name = "GROUP", value_delimiter = ',', value_enum)]
+    only: Vec<bench::Group>,
 }
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
@@ -38,7 +41,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     sdk::prepare(&root)?;
     shell.status("Benchmarking", "bench/programs (real objects, real runtime)");
     let runs = args.runs as usize;
-    let report = bench::run_all(&exe, &std::path::absolute(&args.repo)?, &root, &std::path::absolute(&work)?, runs, |k| {
+    let report = bench::run_all(&exe, &std::path::absolute(&args.repo)?, &root, &std::path::absolute(&work)?, runs, &args.only, |k| {
         shell.status("Running", &format!("round {k} of {runs}"));
     })?;
     let table = stats::markdown(&report.table);

@@ -300,3 +300,11 @@ fn bench_refuses_a_readme_without_markers_before_measuring_anything() {
     assert_ne!(out.status.code(), Some(0), "{}", text(&out));
     assert!(text(&out).contains("--runs"), "{}", text(&out));
 }
+
+#[test]
+fn bench_refuses_an_unknown_group() {
+    let out = cargo_openr(&["bench", "--only", "camera,frobs"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(t.contains("frobs") && t.contains("camera, jitter"), "names the groups it knows: {t}");
+}

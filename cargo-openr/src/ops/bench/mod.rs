@@ -9,6 +9,7 @@ use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 
+mod camera;
 mod network;
 pub mod stats;
 
@@ -149,31 +150,84 @@ struct Built {
     pingpong: PathBuf,
     coldstart: PathBuf,
     movelegs: PathBuf,
+    movehead: PathBuf,
     jitter: PathBuf,
     camwatch: PathBuf,
+    camhead: PathBuf,
+}
+
+/// The groups of figures a run measures (`--only`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Group {
+    /// notify→ready round trips and messages per second, beside a raw channel
+    Messages,
+    /// cold start to the 10th DoStart
+    Coldstart,
+    /// kinematic frames at --speed max (movelegs)
+    Frames,
+    /// camera images and camera programs at --speed max
+    Camera,
+    /// sensor period jitter in real time
+    Jitter,
+    /// ERS-7s with cameras in real time
+    Robots,
+    /// TCP echo and FTP through a robot, beside host servers
+    Network,
 }
 
 /// Runs every benchmark `runs` times; `repo` holds `bench/programs`, `root` is an
 /// installed SDK root. `progress` is told when each round starts.
-pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path, runs: usize, mut progress: impl FnMut(usize)) -> Result<Report> {
+pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path, runs: usize, only: &[Group], mut progress: impl FnMut(usize)) -> Result<Report> {
     let programs = repo.join("bench/programs");
+    let camwatch = build(&programs.join("camwatch"), work, root)?;
+    let movehead = build(&repo.join("testdata/programs/movehead"), work, root)?;
     let b = Built {
         pingpong: build(&programs.join("pingpong"), work, root)?,
         coldstart: build(&programs.join("coldstart"), work, root)?,
         movelegs: build(&repo.join("testdata/programs/movelegs"), work, root)?,
         jitter: build(&programs.join("sensorjitter"), work, root)?,
-        camwatch: build(&programs.join("camwatch"), work, root)?,
+        camhead: camera::camera_head_ms(&movehead, &camwatch, work)?,
+        camwatch,
+        movehead,
     };
+    let wanted = |g: Group| only.is_empty() || only.contains(&g);
     let mut report = Report::default();
     for round in 0..runs.max(1) {
         progress(round + 1);
-        one_round(exe, repo, root, work, &b, &mut report)?;
+        one_round(exe, repo, root, work, &b, &wanted, &mut report)?;
     }
     Ok(report)
 }
 
-fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, report: &mut Report) -> Result<()> {
+fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, wanted: &dyn Fn(Group) -> bool, report: &mut Report) -> Result<()> {
     let tab = &mut report.table;
+    if wanted(Group::Messages) || wanted(Group::Frames) {
+        messages(exe, root, b, tab)?;
+    }
+    if wanted(Group::Coldstart) {
+        coldstart(exe, root, b, tab)?;
+    }
+    let programs = camera::Programs { camwatch: &b.camwatch, movehead: &b.movehead, camhead: &b.camhead, movelegs: &b.movelegs };
+    if wanted(Group::Frames) {
+        camera::frames(exe, root, &programs, tab, RAW_P50)?;
+    }
+    if wanted(Group::Camera) {
+        camera::camera(exe, root, &programs, tab)?;
+    }
+    if wanted(Group::Jitter) {
+        jitter(exe, root, b, tab)?;
+    }
+    if wanted(Group::Robots) {
+        robots(exe, root, b, report)?;
+    }
+    if wanted(Group::Network) {
+        network::network(exe, repo, root, work, &mut report.table)?;
+    }
+    Ok(())
+}
+
+/// Notify→ready round trips between two objects, beside the raw two-thread channel.
+fn messages(exe: &Path, root: &Path, b: &Built, tab: &mut Table) -> Result<()> {
     let out = run_ms(exe, &b.pingpong, root)?;
     let f = fields(&out, "BENCH pingpong");
     let get = |k: &str| field(&f, k, &out);
@@ -184,7 +238,10 @@ fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, repor
     tab.push(RAW_P50, p50 / 1000.0, "µs", None);
     tab.push(RAW_P99, p99 / 1000.0, "µs", None);
     tab.push(RAW_RATE, rate, "msg/s", None);
+    Ok(())
+}
 
+fn coldstart(exe: &Path, root: &Path, b: &Built, tab: &mut Table) -> Result<()> {
     let t0 = monotonic_ns();
     let out = Command::new(exe).args(["run", "-q", "--for", "0.2s", "--sdk"]).arg(root).arg(&b.coldstart).output()?;
     if !out.status.success() {
@@ -197,24 +254,23 @@ fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, repor
     }
     let last = starts.iter().copied().fold(f64::MIN, f64::max);
     tab.push("cold start to the 10th DoStart (10 objects, process spawn included)", (last - t0 as f64) / 1e6, "ms", None);
+    Ok(())
+}
 
-    // Virtual time: the leg program of the corpus, 60 s of robot time at --speed max.
-    let t = Instant::now();
-    let out = Command::new(exe).args(["run", "-q", "--speed", "max", "--for", "60s", "--sdk"]).arg(root).arg(&b.movelegs).output()?;
-    if !out.status.success() {
-        bail!("movelegs at --speed max failed: {}", String::from_utf8_lossy(&out.stderr));
-    }
-    tab.push("movelegs: virtual-time speed-up at --speed max (60 s of robot time)", 60.0 / t.elapsed().as_secs_f64(), "×", None);
-
-    // Real time: how regular the 32 ms sensor vectors arrive at an object.
+/// Real time: how regular the 32 ms sensor vectors arrive at an object.
+fn jitter(exe: &Path, root: &Path, b: &Built, tab: &mut Table) -> Result<()> {
     let out = run_ms(exe, &b.jitter, root)?;
     let f = fields(&out, "BENCH jitter");
     let get = |k: &str| field(&f, k, &out);
     tab.push("sensor period jitter |Δt − 32 ms| p50 (real time, 1000 vectors)", get("p50_ns")? / 1000.0, "µs", None);
     tab.push("sensor period jitter |Δt − 32 ms| p99", get("p99_ns")? / 1000.0, "µs", None);
+    Ok(())
+}
 
-    // Many robots: N runtimes at once, each with the camera at 30 fps and an object that
-    // reads every image and sensor vector, 10 s of robot time in real time.
+/// Many robots: N runtimes at once, each with the camera at 30 fps and an object that
+/// reads every image and sensor vector, 10 s of robot time in real time.
+fn robots(exe: &Path, root: &Path, b: &Built, report: &mut Report) -> Result<()> {
+    let tab = &mut report.table;
     let mut sweep = Vec::new();
     let mut failed_in_a_row = 0;
     for n in ROBOT_COUNTS {
@@ -235,5 +291,5 @@ fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, repor
         None,
     );
     report.sweeps.push(sweep);
-    network::network(exe, repo, root, work, tab)
+    Ok(())
 }

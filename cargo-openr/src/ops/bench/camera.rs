@@ -1,0 +1,111 @@
+//! Camera and frame figures (issue 19, goals 1 and 2): the host time of one ERS-7 image
+//! (the built-in scene and every layer) in this process, beside a copy of an image-sized
+//! buffer measured in the same round; whole camera programs at `--speed max`, beside the
+//! same program without the camera; and the host time of one kinematic frame.
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+use anyhow::{bail, Context, Result};
+use sdk_runtime::robot::model::{Design, Part, POSTURE_PARTS, POSTURE_STAND};
+use sdk_runtime::robot::VirtualRobot;
+
+use super::stats::Table;
+
+const COPY: &str = "copy of one image vector (memcpy, same size)";
+
+/// Median host time of one image (µs) over `n` images, the head panning by `step_deg`
+/// per image (0: held still), and of a plain copy of the vector.
+fn image_us(n: u32, step_deg: f64) -> (f64, f64) {
+    let mut r = VirtualRobot::new(Design::Ers7);
+    r.body_mut().set_posture_deg(&POSTURE_PARTS, &POSTURE_STAND);
+    let mut out = vec![0u8; r.image_vector_size()];
+    let mut copy = vec![0u8; out.len()];
+    let (mut image, mut memcpy) = (Vec::new(), Vec::new());
+    for f in 0..n {
+        // a sweep between ±40° that turns at the ends
+        let pan = 40.0 - (f as f64 * step_deg % 160.0 - 80.0).abs();
+        r.body_mut().set_posture_deg(&[Part::NeckPan], &[pan]);
+        let t = Instant::now();
+        r.render_image_into(f, &mut out);
+        image.push(t.elapsed().as_nanos() as f64);
+        let t = Instant::now();
+        copy.copy_from_slice(std::hint::black_box(&out));
+        memcpy.push(t.elapsed().as_nanos() as f64);
+        std::hint::black_box(&copy);
+    }
+    (median(image) / 1000.0, median(memcpy) / 1000.0)
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// Seconds a `--speed max` run of `ms` for `secs` of robot time takes (process included).
+fn max_speed_run(exe: &Path, ms: &Path, root: &Path, secs: f64) -> Result<f64> {
+    let t = Instant::now();
+    let out = Command::new(exe).args(["run", "-q", "--speed", "max", "--for", &format!("{secs}s"), "--sdk"]).arg(root).arg(ms).output()?;
+    if !out.status.success() {
+        bail!("{} at --speed max failed: {}", ms.display(), String::from_utf8_lossy(&out.stderr));
+    }
+    Ok(t.elapsed().as_secs_f64())
+}
+
+/// movehead with camwatch's object added (reads every image): a camera program whose head
+/// moves for its first ~5.7 s. Made from the two built MS trees.
+pub fn camera_head_ms(movehead: &Path, camwatch: &Path, work: &Path) -> Result<PathBuf> {
+    let dst = work.join("camhead/MS");
+    let _ = std::fs::remove_dir_all(&dst);
+    std::fs::create_dir_all(work.join("camhead"))?;
+    let st = Command::new("cp").arg("-r").arg(movehead).arg(&dst).status()?;
+    if !st.success() {
+        bail!("cannot copy {}", movehead.display());
+    }
+    let (from, to) = (camwatch.join("OPEN-R/MW"), dst.join("OPEN-R/MW"));
+    std::fs::copy(from.join("OBJS/WATCH.BIN"), to.join("OBJS/WATCH.BIN"))?;
+    for cfg in ["CONF/OBJECT.CFG", "CONF/CONNECT.CFG"] {
+        let mut text = std::fs::read_to_string(to.join(cfg)).with_context(|| format!("{cfg} of {}", movehead.display()))?;
+        text.push_str(&std::fs::read_to_string(from.join(cfg))?);
+        std::fs::write(to.join(cfg), text)?;
+    }
+    Ok(dst)
+}
+
+/// The MS trees the figures run.
+pub struct Programs<'a> {
+    pub camwatch: &'a Path,
+    pub movehead: &'a Path,
+    pub camhead: &'a Path,
+    pub movelegs: &'a Path,
+}
+
+pub fn camera(exe: &Path, root: &Path, p: &Programs, tab: &mut Table) -> Result<()> {
+    let (moving, copy) = image_us(300, 3.0);
+    let (still, _) = image_us(300, 0.0);
+    tab.push("camera image, head moving: scene + all layers (in process)", moving, "µs", Some(COPY));
+    tab.push("camera image, head still (in process)", still, "µs", Some(COPY));
+    tab.push(COPY, copy, "µs", None);
+
+    // Whole programs: 5 s while movehead's head moves, with and without the camera.
+    const HEAD_S: f64 = 5.0;
+    let with = max_speed_run(exe, p.camhead, root, HEAD_S)?;
+    let without = max_speed_run(exe, p.movehead, root, HEAD_S)?;
+    const NO_CAMERA: &str = "movehead alone at --speed max (5 s, no camera)";
+    tab.push("camera program, head moving (movehead + camwatch) at --speed max, 5 s", HEAD_S / with, "×", Some(NO_CAMERA));
+    tab.push(NO_CAMERA, HEAD_S / without, "×", None);
+    tab.push("host time per camera image, head moving ((with − without camera) / 150 images)", (with - without).max(0.0) / 150.0 * 1e3, "ms", None);
+    let still = max_speed_run(exe, p.camwatch, root, 60.0)?;
+    tab.push("camera program, head still (camwatch) at --speed max, 60 s", 60.0 / still, "×", None);
+    Ok(())
+}
+
+/// Kinematic frames: movelegs at `--speed max`, per 8 ms frame of robot time (process
+/// start included, measured by a 0.1 s run and taken off).
+pub fn frames(exe: &Path, root: &Path, p: &Programs, tab: &mut Table, reference: &str) -> Result<()> {
+    let long = max_speed_run(exe, p.movelegs, root, 60.0)?;
+    let short = max_speed_run(exe, p.movelegs, root, 0.1)?;
+    tab.push("movelegs: virtual-time speed-up at --speed max (60 s of robot time)", 60.0 / long, "×", None);
+    tab.push("movelegs: host time per 8 ms frame at --speed max (start-up taken off)", (long - short).max(0.0) / 7500.0 * 1e6, "µs", Some(reference));
+    Ok(())
+}
