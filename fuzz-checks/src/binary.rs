@@ -120,3 +120,40 @@ pub fn dns(data: &[u8]) -> bool {
     }
     true
 }
+
+/// The shared-memory vectors an object hands the system objects (effector commands,
+/// speaker sound, colour detection tables): read, never past the region, and an
+/// accepted command slot plays for exactly the frames it says it lasts.
+pub fn vectors(data: &[u8]) -> bool {
+    use sdk_runtime::robot::camera::{parse_cdt, CDT_CHANNELS};
+    use sdk_runtime::robot::vectors::{parse_command_vector, parse_sound_vector, CommandValues, COMMAND_MAX_FRAMES};
+    use sdk_runtime::robot::Design;
+    let mut taken = false;
+    if let Ok(v) = parse_command_vector(data) {
+        taken = true;
+        for slot in &v.slots {
+            let frames = slot.values.duration_frames();
+            if matches!(slot.values, CommandValues::Joint2(_) | CommandValues::Joint3(_)) {
+                assert!(frames <= COMMAND_MAX_FRAMES);
+            }
+            if !matches!(slot.values, CommandValues::Unsupported(_)) {
+                assert!(frames > 0, "slot {} lasts no frame", slot.index);
+                assert!(slot.values.at(frames - 1).is_some() && slot.values.at(frames).is_none(), "slot {} ends at {frames}", slot.index);
+            }
+        }
+        assert!(v.duration_frames() == v.slots.iter().map(|s| s.values.duration_frames()).max().unwrap_or(0));
+    }
+    if let Ok(v) = parse_sound_vector(data) {
+        taken = true;
+        for slot in &v.slots {
+            assert!(data.get(slot.data_offset as usize..(slot.data_offset as usize + slot.data_size as usize)).is_some());
+        }
+    }
+    for design in [Design::Ers7, Design::Ers210] {
+        if let Ok(tables) = parse_cdt(data, 0x0100_0000, design) {
+            taken = true;
+            assert!(tables.len() <= CDT_CHANNELS && tables.iter().all(|t| t.channel < CDT_CHANNELS));
+        }
+    }
+    taken
+}

@@ -9,7 +9,7 @@ mod binary;
 pub mod gen;
 mod text;
 
-pub use binary::{control, dns, elf, wire};
+pub use binary::{control, dns, elf, vectors, wire};
 pub use text::{hostgw, ms_cfg, ocf, openr_toml, stub_cfg, wlan};
 
 /// A fuzz target: its name (as in `fuzz/fuzz_targets/<name>.rs`) and its check.
@@ -58,6 +58,11 @@ pub const TARGETS: &[Target] = &[
     Target { name: "wire", check: wire, dict: &[b"ORP1\x01\x00", b"\x00\x00\x40\x00", b"\xff\xff"] },
     Target { name: "control", check: control, dict: &[b"status", b"pause", b"resume", b"step ", b"speed ", b"max", b"shutdown", b"1e-300", b"1000000", b"\n"] },
     Target { name: "dns", check: dns, dict: &[b"\x81\x80", b"\x00\x01", b"\xc0\x0c", b"\x00\x05\x00\x01", b"\x00\x0c\x00\x01", b"\x00\x04", b"\x3f"] },
+    Target {
+        name: "vectors",
+        check: vectors,
+        dict: &[b"\x03\x01\x00\x00", b"\x07\x01\x00\x00", b"\x10\x00\x00\x00", b"\x15\x00\x00\x00", b"\x00\x00\x00\x01", b"\x10\x00", b"\xff\xff\xff\xff"],
+    },
     Target { name: "elf", check: elf, dict: &[b"\x7fELF\x02\x01\x01", b"\x3e\x00", b"\x03\x00", b"\x38\x00", b"\x1f\x8b\x08"] },
 ];
 
@@ -142,6 +147,18 @@ fn built_seeds(target: &str) -> Vec<Vec<u8>> {
             r.extend_from_slice(&[0xc0, 12, 0, 5, 0, 1, 0, 0, 0, 60, 0, 6, 3, b'd', b'o', b'g', 0xc0, 17]);
             r.extend_from_slice(&[0xc0, 30, 0, 1, 0, 1, 0, 0, 0, 60, 0, 4, 10, 0, 1, 2]);
             vec![r]
+        }
+        "vectors" => {
+            use sdk_runtime::robot::camera::{build_cdt_vector, cdt_entry};
+            use sdk_runtime::robot::vectors::*;
+            let mut cmd = vec![0u8; command_vector_size(3)];
+            command_vector_init(&mut cmd, 3).unwrap();
+            command_vector_push(&mut cmd, odata::JOINT_COMMAND2, 0x0101, &[joint2_frame(-5000), joint2_frame(7000)]).unwrap();
+            command_vector_push(&mut cmd, odata::LED_COMMAND3, 0x0202, &[led3_frame(255, 1, 4), led3_frame(0, 0, 0)]).unwrap();
+            command_vector_push(&mut cmd, odata::JOINT_COMMAND4, 0x0303, &[held_frame(1, 3)]).unwrap();
+            let mic = build_mic_vector(0x0404, 9, &[1, 2, 3, 4, 5, 6, 7, 8]).unwrap();
+            let cdt = build_cdt_vector(0x0100_0000, &[(1, [cdt_entry(200, 100, 180, 90); 32]), (0x40, [0; 32])]);
+            vec![cmd, mic, cdt]
         }
         "elf" => {
             // Shared objects of the system (the tests of elf_check use them too), plain

@@ -70,6 +70,11 @@ fn dns() {
 }
 
 #[test]
+fn vectors() {
+    run("vectors", 3000);
+}
+
+#[test]
 fn elf() {
     run("elf", 1000);
 }
