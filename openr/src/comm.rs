@@ -31,6 +31,9 @@ pub const SEL_INIT: u32 = 0;
 pub const SEL_START: u32 = 1;
 pub const SEL_STOP: u32 = 2;
 pub const SEL_DESTROY: u32 = 3;
+/// The event entry after the observer slots: messages an object's own helper threads
+/// (or the runtime) post to it, `u32` length then the bytes (`Object::event`).
+pub const SEL_EVENT: u32 = 4 + 2 * MAX_SUBJECTS as u32 + 2 * MAX_OBSERVERS as u32;
 
 /// Entry selectors of subject slot `k`: (Control, Ready).
 pub const fn subject_selectors(k: usize) -> (u32, u32) {
@@ -54,6 +57,7 @@ pub(crate) enum Entry {
     Ready(usize),
     Connect(usize),
     Notify(usize),
+    Event,
 }
 
 pub(crate) const fn entry_of(sel: u32) -> Entry {
@@ -63,6 +67,7 @@ pub(crate) const fn entry_of(sel: u32) -> Entry {
         SEL_START => Entry::Start,
         SEL_STOP => Entry::Stop,
         SEL_DESTROY => Entry::Destroy,
+        SEL_EVENT => Entry::Event,
         _ if s < 4 + 2 * MAX_SUBJECTS => {
             if (s - 4) % 2 == 0 {
                 Entry::Control((s - 4) / 2)

@@ -43,15 +43,16 @@ mod payload;
 pub mod robot;
 mod shm;
 
-pub use comm::{observer_selectors, subject_selectors, MAX_OBSERVERS, MAX_SUBJECTS};
+pub use comm::{observer_selectors, subject_selectors, MAX_OBSERVERS, MAX_SUBJECTS, SEL_EVENT};
 pub use console::Priority;
 pub use object::{Context, NotifyEvent, Object, Observer, ReadyEvent, Status, Subject};
 pub use payload::{Payload, Plain};
 pub use shm::Region;
 
 /// Rows of `ObjectEntryTable`: the four life-cycle entries, Control/Ready per subject
-/// slot, Connect/Notify per observer slot, and the `{UNDEF, NULL}` terminator.
-pub const ENTRY_ROWS: usize = 4 + 2 * MAX_SUBJECTS + 2 * MAX_OBSERVERS + 1;
+/// slot, Connect/Notify per observer slot, the event entry and the `{UNDEF, NULL}`
+/// terminator.
+pub const ENTRY_ROWS: usize = 4 + 2 * MAX_SUBJECTS + 2 * MAX_OBSERVERS + 2;
 
 #[doc(hidden)]
 pub unsafe extern "C" fn __entry<T: Object, const SEL: u32>(msg: *mut std::ffi::c_void) {
@@ -69,7 +70,7 @@ pub const fn entry_table<T: Object>() -> [abi::EntryRow; ENTRY_ROWS] {
     }
     rows!(
         0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39,
-        40, 41, 42, 43, 44, 45, 46, 47, 48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64, 65, 66, 67
+        40, 41, 42, 43, 44, 45, 46, 47, 48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59, 60, 61, 62, 63, 64, 65, 66, 67, 68
     )
 }
 
@@ -195,7 +196,8 @@ mod tests {
             let (c, n) = observer_selectors(k);
             assert_eq!((entry_of(c), entry_of(n)), (Entry::Connect(k), Entry::Notify(k)));
         }
-        assert_eq!(observer_selectors(MAX_OBSERVERS - 1).1 as usize, ENTRY_ROWS - 2);
+        assert_eq!(observer_selectors(MAX_OBSERVERS - 1).1 as usize, ENTRY_ROWS - 3);
+        assert_eq!((entry_of(SEL_EVENT), SEL_EVENT as usize), (Entry::Event, ENTRY_ROWS - 2));
     }
 
     #[test]

@@ -46,6 +46,9 @@ pub trait Object: 'static {
     fn ready(&mut self, _ctx: &mut Context, _event: ReadyEvent) {}
     /// Data arrived at one of our observers. Call `assert_ready` on it for more.
     fn notify(&mut self, _ctx: &mut Context, _event: NotifyEvent) {}
+    /// A message at the event entry (`SEL_EVENT`): what the object's own threads, which
+    /// may not touch its subjects and observers, post to it through the runtime.
+    fn event(&mut self, _ctx: &mut Context, _data: &[u8]) {}
 }
 
 /// ASSERT/DEASSERT-READY from an observer (`OReadyEvent`).
@@ -381,6 +384,14 @@ unsafe fn dispatch_inner<T: Object>(sel: u32, msg: *mut c_void) {
             let m: OConnectMessage = unsafe { abi::read(msg) };
             let status = with_context(|ctx| if k < ctx.observers.len() { ctx.connect(k, &m) } else { abi::O_NOT_FOUND });
             reply_status(status.unwrap_or(abi::O_FAIL));
+        }
+        Entry::Event => {
+            // SAFETY: the event entry receives `u32 len` and len bytes (SEL_EVENT's layout).
+            let data = unsafe {
+                let len = std::ptr::read_unaligned(msg.cast::<u32>()) as usize;
+                std::slice::from_raw_parts(msg.cast::<u8>().add(4), len)
+            };
+            with_object::<T>(|o, ctx| o.event(ctx, data));
         }
         Entry::Notify(k) => {
             // SAFETY: the Notify entry receives an ONotifyMessage.

@@ -94,8 +94,11 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
     crate::net::configure(opts.net.clone());
     let stick = read_stick(opts)?;
     let signals = take_over_process(opts)?;
-    let Stick { ms, robot, object_cfg_path, objects, connect_path, connections, design_db, images, system_images, mic_pcm, trace } = stick;
+    let Stick { ms, robot, object_cfg_path, objects, connect_path, connections, duplicates, design_db, images, system_images, mic_pcm, trace } = stick;
     let rt = install(opts, ms, design_db, robot, trace, mic_pcm)?;
+    for (line, first) in duplicates {
+        rt.diag.warn(&format!("{}:{line}: the connection of line {first} again: left out", connect_path.display()));
+    }
     watch_signals(rt, signals)?;
     load_all(rt, opts, system_images, (&object_cfg_path, &objects), images)?;
     let all = rt.all_objects();
@@ -123,6 +126,8 @@ struct Stick {
     objects: Vec<cfg::ObjectEntry>,
     connect_path: PathBuf,
     connections: Vec<cfg::Connection>,
+    /// CONNECT.CFG lines left out as duplicates (line, first line).
+    duplicates: Vec<(usize, usize)>,
     design_db: Vec<(String, String)>,
     images: Vec<Vec<u8>>,
     system_images: Vec<Vec<u8>>,
@@ -144,7 +149,7 @@ fn read_stick(opts: &RunOptions) -> Result<Stick> {
         ErrorKind::Runtime(format!("unknown robot design `{}` (known: {})", opts.design, known.join(", ")))
     })?;
     let (object_cfg_path, objects) = cfg::object_cfg(&ms, &opts.design)?;
-    let (connect_path, connections) = cfg::connect_cfg(&ms, &opts.design)?;
+    let (connect_path, connections, duplicates) = cfg::connect_cfg(&ms, &opts.design)?;
     let design_db = cfg::design_db(&ms, &opts.design)?;
     // Read every image before starting anything, so a bad .BIN fails the run cleanly.
     let images: Vec<Vec<u8>> = objects.iter().map(|o| loader::read_bin(&o.host_path)).collect::<Result<_>>()?;
@@ -161,7 +166,7 @@ fn read_stick(opts: &RunOptions) -> Result<Stick> {
         Some(p) => Some(std::fs::File::create(p).map_err(|e| Error::io(p, e))?),
         None => None,
     };
-    Ok(Stick { ms, robot, object_cfg_path, objects, connect_path, connections, design_db, images, system_images, mic_pcm, trace })
+    Ok(Stick { ms, robot, object_cfg_path, objects, connect_path, connections, duplicates, design_db, images, system_images, mic_pcm, trace })
 }
 
 /// The process becomes the robot: signals, stdin, the crash reporter, FP traps, stdio.
@@ -226,8 +231,17 @@ fn load_all(
         let label = format!("/SYSTEM/OBJS/{}", path.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned()));
         load_object(rt, FIRST_SYSTEM_OID + i, &label, path, image)?;
     }
+    // An RP OPEN-R host program (a HOSTGW.CFG): the host gateway comes first, as
+    // `start-rp-openr` started it (remote-processing 1.2), and as a user object: its
+    // channels open at its Start, once CONNECT.CFG is connected.
+    let mut first = FIRST_OID;
+    if let Some(hostgw) = rt.ms.existing_in_program("/MS/OPEN-R/MW/CONF/HOSTGW.CFG") {
+        let image = [crate::gateway::MAGIC, crate::gateway::HOST_GATEWAY.as_bytes()].concat();
+        load_object(rt, first, "tcpGateway", &hostgw, image)?;
+        first += 1;
+    }
     for (i, (entry, image)) in objects.iter().zip(images).enumerate() {
-        load_object(rt, FIRST_OID + i, &entry.ms_path, &entry.host_path, image).map_err(|e| with_cfg_line(e, &object_cfg_path, entry.line))?;
+        load_object(rt, first + i, &entry.ms_path, &entry.host_path, image).map_err(|e| with_cfg_line(e, &object_cfg_path, entry.line))?;
     }
     Ok(())
 }
@@ -266,6 +280,7 @@ fn end_run(rt: &'static Runtime, opts: &RunOptions, ended: Ended, booted: &[Arc<
         rt.sched.release();
         crate::lifecycle::shutdown(rt, booted, opts.watchdog, &mut failures);
     }
+    failures.0.extend(crate::gateway::failures());
     let internal = crate::host_api::INTERNAL_ERRORS.load(std::sync::atomic::Ordering::Acquire);
     if internal > 0 {
         failures.0.push(format!("{internal} call(s) into the runtime panicked (a bug of cargo-openr, said above)"));

@@ -71,7 +71,12 @@ pub fn object_cfg(ms: &MsDir, design: &str) -> Result<(PathBuf, Vec<ObjectEntry>
         )
     })?;
     let mut out = Vec::new();
-    for (line, ms_path) in parse_object_cfg(&cfg.path, &cfg.text, design)? {
+    // An RP host program may run its gateway alone (a relay; remote-processing 4).
+    let listed = object_lines(&cfg.path, &cfg.text, design)?;
+    if listed.is_empty() && !is_rp(ms, "HOSTGW.CFG") {
+        return Err(no_object(&cfg.path, design));
+    }
+    for (line, ms_path) in listed {
         let host_path = ms
             .existing(&ms_path)
             .filter(|p| p.is_file())
@@ -83,6 +88,19 @@ pub fn object_cfg(ms: &MsDir, design: &str) -> Result<(PathBuf, Vec<ObjectEntry>
 
 /// The `(line, /MS path)` entries of an OBJECT.CFG text (`path` names it in errors).
 pub fn parse_object_cfg(path: &Path, text: &str, design: &str) -> Result<Vec<(usize, String)>> {
+    let out = object_lines(path, text, design)?;
+    if out.is_empty() {
+        return Err(no_object(path, design));
+    }
+    Ok(out)
+}
+
+fn no_object(path: &Path, design: &str) -> Error {
+    Error::config(path, None, format!("lists no object for robot design {design}"))
+}
+
+/// As `parse_object_cfg`, none at all included.
+fn object_lines(path: &Path, text: &str, design: &str) -> Result<Vec<(usize, String)>> {
     let mut out = Vec::new();
     for line in lines_for_design(text, design) {
         if line.fields.len() > 1 {
@@ -93,9 +111,6 @@ pub fn parse_object_cfg(path: &Path, text: &str, design: &str) -> Result<Vec<(us
             ));
         }
         out.push((line.number, line.fields[0].clone()));
-    }
-    if out.is_empty() {
-        return Err(Error::config(path, None, format!("lists no object for robot design {design}")));
     }
     Ok(out)
 }
@@ -108,17 +123,32 @@ pub struct Connection {
     pub observer: String,
 }
 
-/// The connections of CONNECT.CFG for `design` (an absent file means none).
-pub fn connect_cfg(ms: &MsDir, design: &str) -> Result<(PathBuf, Vec<Connection>)> {
+/// Whether the program's MS has MW/CONF/`file` (HOSTGW.CFG, ROBOTGW.CFG): a Remote
+/// Processing program.
+fn is_rp(ms: &MsDir, file: &str) -> bool {
+    ms.existing_in_program(&format!("/MS/OPEN-R/MW/CONF/{file}")).is_some()
+}
+
+/// The connections of CONNECT.CFG for `design` (an absent file means none), and the
+/// lines left out as duplicates (line, first line): allowed in Remote Processing
+/// programs only, whose `-BAD` samples have them (remote-processing 3.3).
+pub fn connect_cfg(ms: &MsDir, design: &str) -> Result<(PathBuf, Vec<Connection>, Vec<(usize, usize)>)> {
     let Some(cfg) = CfgFile::find(ms, "CONNECT.CFG")? else {
-        return Ok((ms.root().join("OPEN-R/MW/CONF/CONNECT.CFG"), Vec::new()));
+        return Ok((ms.root().join("OPEN-R/MW/CONF/CONNECT.CFG"), Vec::new(), Vec::new()));
     };
-    let out = parse_connect_cfg(&cfg.path, &cfg.text, design)?;
-    Ok((cfg.path, out))
+    let mut dups = Vec::new();
+    let rp = is_rp(ms, "HOSTGW.CFG") || is_rp(ms, "ROBOTGW.CFG");
+    let out = parse_connect_cfg_with(&cfg.path, &cfg.text, design, rp.then_some(&mut dups))?;
+    Ok((cfg.path, out, dups))
 }
 
 /// The connections of a CONNECT.CFG text (`path` names it in errors).
 pub fn parse_connect_cfg(path: &Path, text: &str, design: &str) -> Result<Vec<Connection>> {
+    parse_connect_cfg_with(path, text, design, None)
+}
+
+/// As `parse_connect_cfg`; with `dups`, a duplicate line is put there instead of failing.
+fn parse_connect_cfg_with(path: &Path, text: &str, design: &str, mut dups: Option<&mut Vec<(usize, usize)>>) -> Result<Vec<Connection>> {
     let mut out: Vec<Connection> = Vec::new();
     for line in lines_for_design(text, design) {
         let [subject, observer] = &line.fields[..] else {
@@ -139,6 +169,10 @@ pub fn parse_connect_cfg(path: &Path, text: &str, design: &str) -> Result<Vec<Co
             }
         }
         if let Some(first) = out.iter().find(|c| &c.subject == subject && &c.observer == observer) {
+            if let Some(d) = dups.as_deref_mut() {
+                d.push((line.number, first.line));
+                continue;
+            }
             return Err(Error::config(path, Some(line.number), format!("duplicate connection `{subject} {observer}` (first on line {})", first.line)));
         }
         out.push(Connection { line: line.number, subject: subject.clone(), observer: observer.clone() });
@@ -223,6 +257,11 @@ mod tests {
         let good = "A.Out.char.S B.In.char.O\n";
         let (_d, ms) = stick(&[("OPEN-R/MW/CONF/CONNECT.CFG", good)]);
         assert_eq!(connect_cfg(&ms, "ERS-7").unwrap().1.len(), 1);
+        // In a Remote Processing program a duplicate is left out and reported.
+        let dup = "A.Out.char.S B.In.char.O\nA.Out.char.S B.In.char.O\n";
+        let (_d, ms) = stick(&[("OPEN-R/MW/CONF/CONNECT.CFG", dup), ("OPEN-R/MW/CONF/ROBOTGW.CFG", "")]);
+        let (_, conns, dups) = connect_cfg(&ms, "ERS-7").unwrap();
+        assert_eq!((conns.len(), dups), (1, vec![(2, 1)]));
         for (text, want) in [
             ("A.Out.char.S\n", ":1: expected `<subject service> <observer service>`, found 1 field(s)"),
             ("B.In.char.O A.Out.char.S\n", ":1: `B.In.char.O` is not a subject service name"),

@@ -376,7 +376,18 @@ pub(crate) fn cancel_timer(id: u32) -> i32 {
 }
 
 pub(crate) unsafe fn power_status(out: *mut PowerState) {
-    if let (Some(rt), false) = (rt(), out.is_null()) {
+    if out.is_null() {
+        return;
+    }
+    if let Some(reply) = crate::gateway::proxy::call(crate::gateway::proxy::POWER_STATUS, &[]) {
+        let (_, b) = crate::gateway::proxy::split(&reply);
+        if b.len() >= std::mem::size_of::<PowerState>() {
+            // SAFETY: out-param; `b` holds a whole PowerState of 32-bit integers.
+            unsafe { *out = std::ptr::read_unaligned(b.as_ptr().cast::<PowerState>()) };
+        }
+        return;
+    }
+    if let Some(rt) = rt() {
         // SAFETY: out-param.
         unsafe { *out = rt.power.state() };
     }
@@ -394,6 +405,9 @@ pub(crate) unsafe fn observe_power(oid: *mut c_void, selector: u32, filter: *con
 }
 
 pub(crate) fn set_motor_power(on: i32) {
+    if crate::gateway::proxy::call(crate::gateway::proxy::SET_MOTOR_POWER, &on.to_le_bytes()).is_some() {
+        return;
+    }
     if let Some(rt) = rt() {
         rt.vr.robot().set_motor_power(on != 0);
         crate::boot::update_power(rt, |s| {

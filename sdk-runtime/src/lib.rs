@@ -24,6 +24,7 @@ pub mod design;
 pub mod elf_check;
 mod elf_dynamic;
 pub mod error;
+pub mod gateway;
 pub mod host_api;
 pub mod interpose;
 pub mod lifecycle;

@@ -40,6 +40,9 @@ const UNDEF: u32 = 0xffff_ffff;
 /// the file and say what it is instead.
 pub fn read_bin(path: &Path) -> Result<Vec<u8>> {
     let raw = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    if raw.starts_with(crate::gateway::MAGIC) {
+        return Ok(raw); // a built-in object of the runtime (TCPGW.BIN)
+    }
     let elf = gunzip_if_gzip(raw).map_err(|e| {
         let bomb = e.to_string().starts_with("it unpacks");
         Error::load(path, if bomb { format!("refused: {e}") } else { format!("corrupt gzip data: {e}") })
@@ -77,6 +80,9 @@ impl Module {
     /// Loads `bin` (its ELF image already read) as `<index>-<stem>.so`. Static
     /// constructors (the object's `Self`) run here, on the calling thread.
     pub fn load(bin: &Path, elf: &[u8], index: usize) -> Result<Module> {
+        if let Some(name) = crate::gateway::builtin_name(elf) {
+            return crate::gateway::module(name, bin);
+        }
         let stem = bin.file_stem().map_or("object".into(), |s| s.to_string_lossy().into_owned());
         let name = format!("{index:02}-{stem}.so");
         let (opened, so_path) = crate::scratch::dlopen_image(&name, elf, libc::RTLD_NOW | libc::RTLD_LOCAL)
@@ -124,6 +130,24 @@ impl Module {
             make_power: sym("openr_make_power_status_message").map(|p| unsafe { std::mem::transmute::<*mut c_void, MakePower>(p) }),
             ocf_name,
         })
+    }
+
+    /// An object of the runtime's own, written with the `openr` crate.
+    pub fn builtin(table: &'static [openr::abi::EntryRow], name: &str) -> Module {
+        unsafe extern "C" fn reason(r: u32, buf: *mut c_void, cap: usize) -> usize {
+            // SAFETY: the runtime's buffer of `cap` bytes (`build`).
+            unsafe { openr::__glue::make_reason(r, buf, cap) }
+        }
+        unsafe extern "C" fn connect(c: i32, oid: *mut c_void, sel: u32, name: *const libc::c_char, buf: *mut c_void, cap: usize) -> usize {
+            // SAFETY: a C string and the runtime's buffer of `cap` bytes (`connect_message`).
+            unsafe { openr::__glue::make_connect(c, oid, sel, name, buf, cap) }
+        }
+        unsafe extern "C" fn status(msg: *const c_void, size: usize) -> u32 {
+            // SAFETY: the runtime's reply of `size` bytes (`status_of`).
+            unsafe { openr::__glue::read_status(msg, size) }
+        }
+        let entries = table.iter().filter_map(|r| Some((r.selector, r.entry?))).filter(|(s, _)| *s != UNDEF).collect();
+        Module { entries, make_reason: reason, make_connect: connect, read_status: status, make_power: None, ocf_name: Some(name.to_string()) }
     }
 
     /// The entry function for `selector`.

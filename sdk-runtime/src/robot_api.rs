@@ -6,6 +6,7 @@
 use openr_sys as sys;
 use std::ffi::{c_char, c_void, CStr};
 
+use crate::gateway::proxy;
 use crate::robot::status::*;
 use crate::robot::{vectors, Gain, VirtualRobot};
 use crate::runtime::Runtime;
@@ -22,6 +23,14 @@ pub unsafe fn open_primitive(locator: *const c_char, id: *mut u32) -> u32 {
     }
     // SAFETY: NUL-terminated string from the object.
     let loc = unsafe { CStr::from_ptr(locator) }.to_string_lossy().into_owned();
+    if let Some(reply) = proxy::call(proxy::OPEN_PRIMITIVE, loc.as_bytes()) {
+        let (st, out) = proxy::split(&reply);
+        if let Some(p) = out.get(..4) {
+            // SAFETY: out-param.
+            unsafe { *id = u32::from_le_bytes([p[0], p[1], p[2], p[3]]) };
+        }
+        return st;
+    }
     match with_robot(|r| r.open_primitive(&loc)) {
         Some(Ok(p)) => {
             // SAFETY: out-param.
@@ -34,6 +43,9 @@ pub unsafe fn open_primitive(locator: *const c_char, id: *mut u32) -> u32 {
 }
 
 pub fn close_primitive(id: u32) -> u32 {
+    if let Some(reply) = proxy::call(proxy::CLOSE_PRIMITIVE, &id.to_le_bytes()) {
+        return proxy::split(&reply).0;
+    }
     with_robot(|r| r.close_primitive(id)).unwrap_or(O_FAIL)
 }
 
@@ -74,6 +86,9 @@ pub unsafe fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
             w.copy_from_slice(&[v.p, v.i, v.d, v.p_shift, v.i_shift, v.d_shift]);
         }
     };
+    if let Some(st) = proxied_gain(op, id, gains) {
+        return st;
+    }
     with_robot(|r| match op {
         sys::GAIN_ENABLE => r.enable_joint_gain(id),
         sys::GAIN_DISABLE => r.disable_joint_gain(id),
@@ -99,6 +114,39 @@ pub unsafe fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
     .unwrap_or(O_FAIL)
 }
 
+/// `joint_gain` on the robot of an RP host program (`None`: no proxy, run it here).
+fn proxied_gain(op: i32, id: u32, gains: *mut u16) -> Option<u32> {
+    let mut args = [op.to_le_bytes(), id.to_le_bytes()].concat();
+    let mut words = [0u16; 6];
+    if !gains.is_null() && matches!(op, sys::GAIN_SET | sys::GAIN_REGISTER_DEFAULT) {
+        // SAFETY: six words from the object.
+        words.copy_from_slice(unsafe { std::slice::from_raw_parts(gains, 6) });
+    }
+    words.iter().for_each(|w| args.extend_from_slice(&w.to_le_bytes()));
+    let reply = proxy::call(proxy::JOINT_GAIN, &args)?;
+    let (st, out) = proxy::split(&reply);
+    if st == O_SUCCESS && !gains.is_null() && matches!(op, sys::GAIN_GET | sys::GAIN_GET_DEFAULT) && out.len() >= 12 {
+        for k in 0..6 {
+            // SAFETY: six words from the object.
+            unsafe { *gains.add(k) = u16::from_le_bytes([out[2 * k], out[2 * k + 1]]) };
+        }
+    }
+    Some(st)
+}
+
+/// A 16-byte value read on the robot of an RP host program (`None`: no proxy).
+unsafe fn proxied_value(api: u8, id: u32, out: *mut c_void) -> Option<u32> {
+    let reply = proxy::call(api, &id.to_le_bytes())?;
+    let (st, v) = proxy::split(&reply);
+    if st == O_SUCCESS && v.len() >= 16 {
+        let mut b = [0u8; 16];
+        b.copy_from_slice(&v[..16]);
+        // SAFETY: see put16 (the caller checked `out`).
+        unsafe { put16(out, b) };
+    }
+    Some(st)
+}
+
 unsafe fn put16(out: *mut c_void, bytes: [u8; 16]) {
     // SAFETY: a 16-byte OJointValue/OSensorValue from the object.
     unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.cast::<u8>(), 16) };
@@ -107,6 +155,10 @@ unsafe fn put16(out: *mut c_void, bytes: [u8; 16]) {
 pub unsafe fn joint_value(id: u32, out: *mut c_void) -> u32 {
     if out.is_null() {
         return O_INVALID_ARG;
+    }
+    // SAFETY: `out` is the object's 16-byte value (checked non-null).
+    if let Some(st) = unsafe { proxied_value(proxy::JOINT_VALUE, id, out) } {
+        return st;
     }
     match with_robot(|r| r.joint_value(id)) {
         Some(Ok(v)) => {
@@ -122,6 +174,10 @@ pub unsafe fn joint_value(id: u32, out: *mut c_void) -> u32 {
 pub unsafe fn sensor_value(id: u32, out: *mut c_void) -> u32 {
     if out.is_null() {
         return O_INVALID_ARG;
+    }
+    // SAFETY: `out` is the object's 16-byte value (checked non-null).
+    if let Some(st) = unsafe { proxied_value(proxy::SENSOR_VALUE, id, out) } {
+        return st;
     }
     match with_robot(|r| r.sensor_value(id)) {
         Some(Ok(v)) => {

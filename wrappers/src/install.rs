@@ -405,6 +405,10 @@ fn write_base_trees(open_r: &Path) -> Result<(), Error> {
                     fs::create_dir_all(tree.join(d)).map_err(|e| Error::io(tree.join(d), e))?;
                 }
                 write(&tree.join("SYSTEM/CONF/OBJECT.CFG"), b"# System objects are built into the cargo-openr runtime.\r\n")?;
+                if prot == "nomemprot" {
+                    // Distributed execution runs over nomemprot only (remote-processing 5).
+                    write(&tree.join("SYSTEM/OBJS/TCPGW.BIN"), crate::rp::TCPGW_BIN)?;
+                }
                 write(&tree.join("SYSTEM/CONF/EXTOBJ.CFG"), b"# Extra system objects: none, the runtime provides them.\r\n")?;
                 write(&tree.join("SYSTEM/CONF/EMON.CFG"), b"# Exception monitor script: the runtime reports crashes itself.\r\n")?;
                 if kind != "BASIC" {

@@ -9,7 +9,7 @@ use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context};
-use openr_wrappers::rp::gwcfg::{self, GwLine};
+use openr_wrappers::rp::gwcfg;
 
 use crate::shell::Shell;
 
@@ -20,7 +20,7 @@ pub fn start_args(cwd: &Path, extra: Vec<OsString>, root: Option<&Path>, shell: 
     if !object_cfg.is_file() {
         bail!("no {} : run start-rp-openr from the directory that holds MS/ (after `make install` there)", object_cfg.display());
     }
-    check_hostgw(&conf.join("HOSTGW.CFG"), shell)?;
+    check_hostgw(&conf.join("HOSTGW.CFG"))?;
     for name in ["OBJECT.CFG", "CONNECT.CFG"] {
         warn_design_sections(&conf.join(name), shell);
     }
@@ -42,24 +42,10 @@ fn object_lines(text: &str) -> impl Iterator<Item = &str> {
     text.lines().map(|l| l.trim()).filter(|l| !l.is_empty() && !l.starts_with('#') && !l.starts_with('[')).filter_map(|l| l.split_whitespace().next())
 }
 
-/// HOSTGW.CFG: the proxy line alone is fine (HelloWorld-stubgen/RP: its calls run
-/// against the runtime's emulated robot); data channels to a robot need the TCP gateway.
-fn check_hostgw(path: &Path, shell: &mut Shell) -> anyhow::Result<()> {
-    let lines = gwcfg::read(path).map_err(|e| anyhow::anyhow!("{e}"))?;
-    for l in &lines {
-        match l {
-            GwLine::Proxy { line, port, .. } => shell.warn(&format!(
-                "{}:{line}: robot proxy port {port} not opened: the OPEN-R calls of host objects run against the runtime's emulated robot",
-                path.display()
-            )),
-            GwLine::Service { line, name, port, .. } => bail!(
-                "{}:{line}: gateway service {name} (port {port}): TCP channels to a robot are not supported by this cargo-openr yet; \
-                 only all-host programs (a HOSTGW.CFG with no service lines) run",
-                path.display()
-            ),
-        }
-    }
-    Ok(())
+/// HOSTGW.CFG is read before anything starts, so a bad line fails at once (the runtime's
+/// host gateway reads it again and opens the channels).
+fn check_hostgw(path: &Path) -> anyhow::Result<()> {
+    gwcfg::read(path).map(drop).map_err(|e| anyhow::anyhow!("{e}"))
 }
 
 /// Robot-design sections are not supported in host CFG files (IG4.3); say how ours treats them.

@@ -19,6 +19,7 @@ mod peer;
 mod replay;
 mod robot;
 mod rp;
+mod rp_gateway;
 mod run;
 mod rust_objects;
 mod rust_robot;

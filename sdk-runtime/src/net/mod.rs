@@ -107,6 +107,12 @@ pub fn configure(opts: config::NetOptions) {
     let _ = OPTIONS.set(opts);
 }
 
+/// The run's network settings (defaults before `configure`): the TCP gateways of
+/// Remote Processing use them without starting the IPStack.
+pub fn options() -> config::NetOptions {
+    OPTIONS.get().cloned().unwrap_or_default()
+}
+
 /// The IPStack, started on first use (its poll thread included).
 pub fn net() -> &'static Net {
     let mut started = false;

@@ -9,6 +9,14 @@
 pub mod config;
 pub mod gwcfg;
 
+/// First bytes of the `.BIN` of an object built into the cargo-openr runtime; the rest
+/// of the line names it (the runtime's `gateway` module).
+pub const BUILTIN_MAGIC: &[u8] = b"#!cargo-openr built-in object ";
+
+/// `OPEN_R/MS_*/*/*/OPEN-R/SYSTEM/OBJS/TCPGW.BIN`: the robot's TCP gateway of Remote
+/// Processing OPEN-R, which the runtime provides (as it does the virtual robot).
+pub const TCPGW_BIN: &[u8] = b"#!cargo-openr built-in object robot-gateway\n";
+
 use std::ffi::OsString;
 use std::path::Path;
 

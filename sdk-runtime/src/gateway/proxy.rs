@@ -1,0 +1,138 @@
+//! The OPEN-R API proxy (remote-processing 1.3, 7.4): a host object's hardware calls —
+//! primitives, joint gains, joint and sensor values, motor power, the power status —
+//! run on the robot. A call is one `PROXY_CALL` frame (`api:u8`, its arguments,
+//! little-endian) answered by one `PROXY_REPLY` (`OStatus:u32`, the out-values).
+//! Memory-only helpers (`NewCommandVectorData`, …) stay on the host: the vectors they
+//! make travel as data through the gateway channels.
+use std::net::TcpStream;
+use std::sync::OnceLock;
+use std::time::Duration;
+
+use super::link::Link;
+use super::wire;
+use crate::robot::status::{O_FAIL, O_SUCCESS};
+
+pub const OPEN_PRIMITIVE: u8 = 1;
+pub const CLOSE_PRIMITIVE: u8 = 2;
+pub const JOINT_GAIN: u8 = 3;
+pub const JOINT_VALUE: u8 = 4;
+pub const SENSOR_VALUE: u8 = 5;
+pub const SET_MOTOR_POWER: u8 = 6;
+pub const POWER_STATUS: u8 = 7;
+
+/// How long a call waits for the proxy connection to come up.
+const CONNECT_WAIT: Duration = Duration::from_secs(10);
+
+/// The host gateway's `!ROBOT_PROXY` line, when it has one.
+static CLIENT: OnceLock<std::sync::Arc<Link>> = OnceLock::new();
+
+pub(super) fn set_client(link: std::sync::Arc<Link>) {
+    let _ = CLIENT.set(link);
+}
+
+/// Runs `api` on the robot: None when this run has no proxy (the call runs locally),
+/// else the reply (`[O_FAIL]` when the robot cannot be reached).
+pub fn call(api: u8, args: &[u8]) -> Option<Vec<u8>> {
+    let link = CLIENT.get()?;
+    let mut req = vec![api];
+    req.extend_from_slice(args);
+    match link.exchange(wire::PROXY_CALL, &req, CONNECT_WAIT) {
+        Some((wire::PROXY_REPLY, reply)) if reply.len() >= 4 => Some(reply),
+        _ => {
+            once_unreachable(link);
+            Some(O_FAIL.to_le_bytes().to_vec())
+        }
+    }
+}
+
+fn once_unreachable(link: &Link) {
+    static SAID: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+    if !SAID.swap(true, std::sync::atomic::Ordering::AcqRel) {
+        super::warn(&format!("{}: the robot's OPEN-R API proxy is not reachable: OPENR:: calls of host objects return oFAIL", link.place));
+    }
+}
+
+/// The status of a reply and the out-values after it.
+pub fn split(reply: &[u8]) -> (u32, &[u8]) {
+    let status = u32::from_le_bytes([reply[0], reply[1], reply[2], reply[3]]);
+    (status, &reply[4..])
+}
+
+/// Robot: answers calls until the host goes.
+pub(super) fn serve_calls(s: &mut TcpStream) {
+    while let Ok((kind, req)) = wire::read_frame(s) {
+        if kind != wire::PROXY_CALL || req.is_empty() {
+            break;
+        }
+        if wire::write_frame(s, wire::PROXY_REPLY, &execute(req[0], &req[1..])).is_err() {
+            break;
+        }
+    }
+}
+
+fn u32_at(b: &[u8], at: usize) -> Option<u32> {
+    Some(u32::from_le_bytes(b.get(at..at + 4)?.try_into().ok()?))
+}
+
+/// One call against this robot.
+fn execute(api: u8, args: &[u8]) -> Vec<u8> {
+    let mut out = Vec::new();
+    let status = run(api, args, &mut out).unwrap_or(crate::robot::status::O_INVALID_ARG);
+    let mut reply = status.to_le_bytes().to_vec();
+    reply.extend_from_slice(&out);
+    reply
+}
+
+fn run(api: u8, args: &[u8], out: &mut Vec<u8>) -> Option<u32> {
+    use crate::robot_api as r;
+    Some(match api {
+        OPEN_PRIMITIVE => {
+            let loc = std::ffi::CString::new(args).ok()?;
+            let mut id = 0u32;
+            // SAFETY: a C string and a live out-param.
+            let st = unsafe { r::open_primitive(loc.as_ptr(), &mut id) };
+            out.extend_from_slice(&id.to_le_bytes());
+            st
+        }
+        CLOSE_PRIMITIVE => r::close_primitive(u32_at(args, 0)?),
+        JOINT_GAIN => {
+            let op = u32_at(args, 0)? as i32;
+            let id = u32_at(args, 4)?;
+            let mut gains = [0u16; 6];
+            for (k, g) in gains.iter_mut().enumerate() {
+                *g = u16::from_le_bytes(args.get(8 + 2 * k..10 + 2 * k)?.try_into().ok()?);
+            }
+            // SAFETY: six live words.
+            let st = unsafe { r::joint_gain(op, id, gains.as_mut_ptr()) };
+            gains.iter().for_each(|g| out.extend_from_slice(&g.to_le_bytes()));
+            st
+        }
+        JOINT_VALUE | SENSOR_VALUE => {
+            let mut v = [0u8; 16];
+            let id = u32_at(args, 0)?;
+            // SAFETY: 16 live bytes, the size of OJointValue / OSensorValue.
+            let st = unsafe {
+                if api == JOINT_VALUE {
+                    r::joint_value(id, v.as_mut_ptr().cast())
+                } else {
+                    r::sensor_value(id, v.as_mut_ptr().cast())
+                }
+            };
+            out.extend_from_slice(&v);
+            st
+        }
+        SET_MOTOR_POWER => {
+            crate::host_api::set_motor_power(u32_at(args, 0)? as i32);
+            O_SUCCESS
+        }
+        POWER_STATUS => {
+            let mut p = crate::power::PowerState::default();
+            // SAFETY: a live out-param.
+            unsafe { crate::host_api::power_status(&mut p) };
+            // SAFETY: a repr(C) struct of 32-bit integers, no padding.
+            out.extend_from_slice(unsafe { std::slice::from_raw_parts((&p as *const crate::power::PowerState).cast::<u8>(), std::mem::size_of_val(&p)) });
+            O_SUCCESS
+        }
+        _ => return None,
+    })
+}

@@ -1,0 +1,162 @@
+//! From the CFG file to a loaded gateway: ROBOTGW.CFG / HOSTGW.CFG read and checked
+//! (every error names the file and line), the robot's ports bound before any object
+//! starts, addresses mapped by `--net-bind` / `--port-offset` / `--net-map`, and the
+//! built-in object's [`Module`].
+use std::collections::HashMap;
+use std::net::{Ipv4Addr, SocketAddrV4, TcpListener};
+use std::path::Path;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex, OnceLock};
+
+use openr_wrappers::rp::gwcfg::{self, GwLine};
+
+use super::link::{self, Link};
+use super::wire::Hello;
+use super::{Setup, HOST_GATEWAY, ROBOT_GATEWAY, SETUP};
+use crate::error::{ErrorKind, Result};
+use crate::loader::Module;
+use crate::net::config::NetConfig;
+use crate::runtime::Runtime;
+
+/// What a line's thread does once the gateway starts.
+pub enum Target {
+    Listen(TcpListener),
+    Connect(SocketAddrV4),
+}
+
+static HOST: AtomicBool = AtomicBool::new(false);
+
+pub fn is_host() -> bool {
+    HOST.load(Ordering::Acquire)
+}
+
+pub fn spawn(link: Arc<Link>, target: Target) {
+    let name = format!("openr-gw-{}", link.hello.port);
+    let _ = std::thread::Builder::new().name(name).spawn(move || match target {
+        Target::Listen(l) => link::serve(link, l),
+        Target::Connect(a) => link::connect(link, a),
+    });
+}
+
+/// The module of built-in object `name` (`robot-gateway`, `host-gateway`) loaded from
+/// `bin`: reads its CFG file and prepares every channel.
+pub fn module(name: &str, bin: &Path) -> Result<Module> {
+    let err = |m: String| crate::error::Error::from(ErrorKind::Runtime(m));
+    let rt = Runtime::get().ok_or_else(|| err("the gateway needs a running runtime".into()))?;
+    let (host, file) = match name {
+        ROBOT_GATEWAY => (false, "ROBOTGW.CFG"),
+        HOST_GATEWAY => (true, "HOSTGW.CFG"),
+        _ => return Err(crate::error::Error::load(bin, format!("names built-in object `{name}`, which this runtime does not have"))),
+    };
+    if SETUP.get().is_some() {
+        return Err(crate::error::Error::load(bin, "a second TCP gateway in one run (the robot has one TCPGateway)"));
+    }
+    HOST.store(host, Ordering::Release);
+    let path = rt.ms.existing(&format!("/MS/OPEN-R/MW/CONF/{file}"));
+    let lines = match &path {
+        Some(p) => gwcfg::read(p).map_err(|e| err(e.to_string()))?,
+        None => {
+            rt.diag.warn(&format!("{}: no MS/OPEN-R/MW/CONF/{file}: the gateway has no channels", bin.display()));
+            Vec::new()
+        }
+    };
+    let shown = path.as_deref().map_or_else(|| file.to_string(), |p| p.display().to_string());
+    let net = NetConfig::new(&crate::net::options(), rt.diag.quiet);
+    let (links, targets) = prepare(&shown, &lines, host, &net).map_err(err)?;
+    if let Some(p) = links.iter().find(|l| l.hello.suffix == b'P').filter(|_| host) {
+        super::proxy::set_client(p.clone());
+    }
+    warn_shared_services(rt, &links);
+    let targets = Mutex::new(targets.into_iter().map(Some).collect());
+    let _ = SETUP.set(Setup { links, targets, oid: OnceLock::new() });
+    Ok(Module::builtin(&super::ENTRY_TABLE, if host { "tcpGateway" } else { "TCPGateway" }))
+}
+
+type Prepared = (Vec<Arc<Link>>, Vec<Target>);
+
+/// Checks the lines as a whole and makes each one's link and target.
+fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::result::Result<Prepared, String> {
+    let proxy_addr = lines.iter().find_map(|l| match l {
+        GwLine::Proxy { addr, .. } => addr.clone(),
+        _ => None,
+    });
+    let mut seen_ports: HashMap<(Option<String>, u16), usize> = HashMap::new();
+    let mut seen_names: HashMap<&str, usize> = HashMap::new();
+    let (mut subjects, mut observers, mut proxies) = (0, 0, 0);
+    let (mut links, mut targets) = (Vec::new(), Vec::new());
+    for l in lines {
+        let (line, name, port, addr, options) = match l {
+            GwLine::Proxy { line, port, addr } => (*line, "TCPGateway.Proxy.AperiosMessage.P", *port, addr.clone(), &[][..]),
+            GwLine::Service { line, name, port, addr, options } => (*line, name.as_str(), *port, addr.clone(), &options[..]),
+        };
+        let place = format!("{file}:{line}");
+        let suffix = *name.as_bytes().last().unwrap_or(&b'P');
+        match suffix {
+            b'S' => subjects += 1,
+            b'O' => observers += 1,
+            _ => proxies += 1,
+        }
+        if proxies > 1 && suffix == b'P' {
+            return Err(format!("{place}: a second proxy line (one per gateway)"));
+        }
+        if subjects > openr::MAX_SUBJECTS || observers > openr::MAX_OBSERVERS {
+            return Err(format!("{place}: more than {} subject or observer lines (the gateway has as many service slots)", openr::MAX_SUBJECTS));
+        }
+        if let Some(prev) = seen_names.insert(name, line).filter(|_| suffix != b'P') {
+            return Err(format!("{place}: service {name} is already line {prev}: each line is its own service"));
+        }
+        let key = (if host { addr.clone().or(proxy_addr.clone()) } else { None }, port);
+        if let Some(prev) = seen_ports.insert(key, line) {
+            return Err(format!("{place}: port {port} is already line {prev}: one channel per port{}", if host { " and robot" } else { "" }));
+        }
+        for o in options {
+            let key = o.split('=').next().unwrap_or("");
+            if !matches!(key, "dskip" | "dmin" | "dmax") {
+                super::warn(&format!("{place}: unknown option `{o}` ignored (known: dskip, dmin, dmax)"));
+            }
+        }
+        let hello = Hello { suffix, port, name: name.to_string(), place: place.clone() };
+        let target = if host {
+            let ip = addr.or(proxy_addr.clone()).ok_or_else(|| format!("{place}: no robot address, and no `!ROBOT_PROXY` line to take it from"))?;
+            let ip: Ipv4Addr = ip.parse().map_err(|_| format!("{place}: `{ip}` is not an IPv4 address"))?;
+            let (a, p) = net.remote(u32::from(ip), port, "gateway channel");
+            Target::Connect(SocketAddrV4::new(Ipv4Addr::from(a), p))
+        } else {
+            if addr.is_some() {
+                super::warn(&format!("{place}: the robot listens, the address on this line is ignored"));
+            }
+            let p = net.local_port(port, "gateway channel").ok_or_else(|| format!("{place}: port {port} moved by --port-offset does not fit"))?;
+            let at = SocketAddrV4::new(Ipv4Addr::from(net.bind), p);
+            let l = TcpListener::bind(at).map_err(|e| format!("{place}: cannot listen on {at} for channel {port}: {e}"))?;
+            Target::Listen(l)
+        };
+        links.push(Arc::new(Link::new(links.len(), place, hello)));
+        targets.push(target);
+    }
+    Ok((links, targets))
+}
+
+/// A gateway service named in more than one CONNECT.CFG line carries several logical
+/// connections on one channel (Sony's ObjectComm-multi RP2-BAD / RP3-BAD): said at start.
+fn warn_shared_services(rt: &Runtime, links: &[Arc<Link>]) {
+    let design = rt.design.to_string_lossy().into_owned();
+    let Ok((path, conns, _)) = crate::cfg::connect_cfg(&rt.ms, &design) else { return };
+    let distinct = &conns;
+    for l in links.iter().filter(|l| l.hello.suffix != b'P') {
+        let uses: Vec<usize> = distinct.iter().filter(|c| c.subject == l.hello.name || c.observer == l.hello.name).map(|c| c.line).collect();
+        if uses.len() > 1 {
+            let lines: Vec<String> = uses.iter().map(usize::to_string).collect();
+            rt.diag.warn(&format!(
+                "{}:{}: gateway service {} (port {}, {}) is in {} connections (lines {}): one channel carries one subject-observer \
+                 connection; here every observer gets what every subject sends, and their readiness is mixed",
+                path.display(),
+                uses[0],
+                l.hello.name,
+                l.hello.port,
+                l.place,
+                uses.len(),
+                lines.join(", ")
+            ));
+        }
+    }
+}
