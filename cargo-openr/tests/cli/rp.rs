@@ -132,7 +132,7 @@ fn host_gateway_lines_are_checked_and_reported() {
     let port = free_port();
     fs::write(conf.join("HOSTGW.CFG"), format!("\n# proxy only\n! ROBOT_PROXY {port} 127.0.0.1\n")).unwrap();
     // Real time: the gateway's first try is on a thread of its own, as it is on the robot.
-    let out = start_rp(&host, &["--for", "1s"]);
+    let out = start_rp(&host, &["--for", "3s"]);
     let (stdout, stderr) = text(&out);
     assert!(out.status.success(), "{stderr}");
     assert!(stderr.contains(&format!("HOSTGW.CFG:3: robot 127.0.0.1:{port} not reachable")), "{stderr}");

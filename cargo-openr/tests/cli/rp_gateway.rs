@@ -226,7 +226,7 @@ fn an_unreachable_robot_is_reported_and_fails_the_host_run() {
     let port = free_port();
     let ms = gateway_only_host(tmp.path(), &format!("# no robot here\nTCPGateway.Cam.Frame.S {port} 127.0.0.1\n"));
     // Real time: the tries are on the gateway's thread, virtual time does not wait for them.
-    let out = run_ms(&ms, &["--base", "none", "--for", "1s"]);
+    let out = run_ms(&ms, &["--base", "none", "--for", "3s"]);
     assert_ne!(out.code, Some(0), "{}", out.stderr);
     assert!(out.stderr.contains(&format!("HOSTGW.CFG:2: robot 127.0.0.1:{port} not reachable")), "{}", out.stderr);
     assert!(out.stderr.contains(&format!("HOSTGW.CFG:2: channel {port} never reached the robot")), "{}", out.stderr);
