@@ -253,3 +253,64 @@ fn a_subject_paired_with_a_subject_is_refused_on_both_sides() {
     assert!(r_out.stderr.contains(&format!("ROBOTGW.CFG:1: channel {port}: {refused} (")), "{}", r_out.stderr);
     assert_eq!(r_out.code, Some(0), "{}", r_out.stderr);
 }
+
+/// `(robot frame, J1 degrees)` of each report LegSwing printed.
+fn leg_reports(stdout: &str) -> Vec<(u32, i32)> {
+    stdout
+        .lines()
+        .filter_map(|l| {
+            let rest = l.strip_prefix("LegSwing : robot frame ")?;
+            let (frame, rest) = rest.split_once(", right front J1 ")?;
+            Some((frame.parse().ok()?, rest.strip_suffix(" deg")?.parse().ok()?))
+        })
+        .collect()
+}
+
+/// Waits until LegSwing reported a swing both ways (J1 up to 25° or more and back to 15°
+/// or less) after robot frame `after`; the reports.
+fn wait_swing(h: &Running, after: u32) -> Vec<(u32, i32)> {
+    let start = Instant::now();
+    loop {
+        let got: Vec<(u32, i32)> = leg_reports(&h.stdout()).into_iter().filter(|r| r.0 > after).collect();
+        let up = got.iter().position(|r| r.1 >= 25);
+        if up.is_some_and(|k| got[k..].iter().any(|r| r.1 <= 15)) || start.elapsed() > PATIENCE {
+            return got;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+/// LMasterRSlave's shape: the control loop runs on the host, the robot only relays.
+/// Proxy calls (OpenPrimitive, gains, SetMotorPower, GetJointValue) run on the robot,
+/// command vectors reach its effector, sensor frames come back; Sony's 10.0.1.100 lines
+/// reach the emulator through --net-map. The host is killed (SIGKILL) and started again:
+/// the robot runs on, takes the new host, and the leg swings again.
+#[test]
+fn a_host_control_loop_drives_the_robot_leg_and_survives_a_host_restart() {
+    let built = build("rp-legs");
+    let dir = built.dir.path().join("rp-legs/RP");
+    let tmp = tempfile::tempdir().unwrap();
+    let p = ports(3);
+    let r_ms = side(&dir.join("robot"), &tmp.path().join("robot"), &p);
+    let h_ms = side(&dir.join("host"), &tmp.path().join("host"), &p);
+    let net_map = ["--net-map", "10.0.1.100=127.0.0.1"];
+    let rob = robot(&r_ms);
+    let h1 = host(&h_ms, &net_map);
+    let first = wait_swing(&h1, 0);
+    let out1 = h1.stdout();
+    assert!(out1.contains("LegSwing : motor power on, OStatus 0"), "{out1}\n{}", h1.stderr());
+    assert!(out1.contains("LegSwing : opened PRM:/r4/c1-Joint2:41 as primitive"), "{out1}");
+    assert!(first.iter().any(|r| r.1 >= 25) && first.iter().any(|r| r.1 <= 15), "no swing: {first:?}\n{out1}\n{}", h1.stderr());
+    let last = first.last().unwrap().0;
+    drop(h1); // SIGKILL: the host side dies without a word
+    assert!(wait_stderr(&rob, &format!("channel {}: host 127.0.0.1:", p[1])), "{}", rob.stderr());
+    assert!(wait_stderr(&rob, "gone; listening for it again"), "{}", rob.stderr());
+    let h2 = host(&h_ms, &net_map);
+    let second = wait_swing(&h2, last);
+    let out2 = h2.stop();
+    assert!(second.iter().any(|r| r.1 >= 25) && second.iter().any(|r| r.1 <= 15), "no swing after the restart: {second:?}\n{}\n{}", out2.stdout, out2.stderr);
+    assert!(second[0].0 > last, "the robot's frames go on from {last}: {second:?}");
+    let r_out = rob.stop();
+    assert_eq!(r_out.code, Some(0), "the robot kept running to the end: {}", r_out.stderr);
+    assert_eq!(r_out.stderr.matches(&format!("channel {}: host 127.0.0.1:", p[2])).count(), 4, "two hosts came and went on the effector channel: {}", r_out.stderr);
+}

@@ -103,6 +103,18 @@ fn post(channel: usize, kind: u8, payload: &[u8]) {
     let _ = rt.send(*oid, openr::SEL_EVENT, m);
 }
 
+/// Starts the thread of every line `which` picks that has not started yet.
+fn spawn_targets(setup: &Setup, which: impl Fn(&Link) -> bool) {
+    let mut targets = setup.targets.lock().unwrap_or_else(|p| p.into_inner());
+    for (link, target) in setup.links.iter().zip(targets.iter_mut()) {
+        if which(link) {
+            if let Some(t) = target.take() {
+                setup::spawn(link.clone(), t);
+            }
+        }
+    }
+}
+
 /// One line's service in the object.
 enum End {
     Sub(Subject<[u8]>),
@@ -126,6 +138,8 @@ impl Object for Gateway {
         if let Some(me) = crate::object::current() {
             let _ = setup.oid.set(me.oid);
         }
+        // The proxy first: host objects call OPENR:: from their DoInit already.
+        spawn_targets(setup, |l| l.hello.suffix == b'P');
         let ends = setup
             .links
             .iter()
@@ -140,12 +154,8 @@ impl Object for Gateway {
 
     /// The channels open now: the program is connected and running.
     fn start(&mut self, _ctx: &mut Context) {
-        let Some(setup) = SETUP.get() else { return };
-        let targets: Vec<_> = setup.targets.lock().unwrap_or_else(|p| p.into_inner()).iter_mut().map(Option::take).collect();
-        for (link, target) in setup.links.iter().zip(targets) {
-            if let Some(t) = target {
-                setup::spawn(link.clone(), t);
-            }
+        if let Some(setup) = SETUP.get() {
+            spawn_targets(setup, |_| true);
         }
     }
 
