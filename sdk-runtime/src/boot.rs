@@ -93,6 +93,13 @@ pub enum Ended {
 pub fn run(opts: &RunOptions) -> Result<Outcome> {
     crate::net::configure(opts.net.clone());
     let stick = read_stick(opts)?;
+    if stick.ms.existing_in_program("/MS/OPEN-R/MW/CONF/HOSTGW.CFG").is_some() {
+        // A host program of Remote Processing OPEN-R, however started: libOPENR refuses
+        // the calls Sony's host objects cannot make (remote-processing 4), rather than
+        // running them on this PC's emulated robot instead of the robot at the far end.
+        // Set before any thread of the run exists.
+        std::env::set_var("OPENR_RP_HOST", "1");
+    }
     let signals = take_over_process(opts)?;
     let Stick { ms, robot, object_cfg_path, objects, connect_path, connections, duplicates, design_db, images, system_images, mic_pcm, trace } = stick;
     let rt = install(opts, ms, design_db, robot, trace, mic_pcm)?;

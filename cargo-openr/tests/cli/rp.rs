@@ -183,11 +183,23 @@ fn rp_host_objects_get_ofail_for_robot_only_calls() {
     let (stdout, stderr) = text(&host);
     assert!(host.status.success(), "{stderr}");
     let lines: Vec<&str> = stdout.lines().filter(|l| l.starts_with("HostApi:")).collect();
-    assert_eq!(lines, ["HostApi: GetRobotDesign ok (ERS-7)", "HostApi: NewSoundVectorData oFAIL"], "{stdout}\n{stderr}");
+    let host_lines = ["HostApi: GetRobotDesign ok (ERS-7)", "HostApi: NewSoundVectorData oFAIL", "HostApi: IPStack not found"];
+    assert_eq!(lines, host_lines, "{stdout}\n{stderr}");
     let note = "OPENR::NewSoundVectorData: not available to Remote Processing OPEN-R host objects; returns oFAIL";
     assert_eq!(stderr.matches(note).count(), 1, "{stderr}");
+    assert_eq!(stderr.matches("antStackRef: the ANT network library is not available to Remote Processing OPEN-R host objects").count(), 1, "{stderr}");
+    // A host program with a HOSTGW.CFG is a host program under `cargo openr run` too.
+    let conf = dir.join("RP/host/MS/OPEN-R/MW/CONF");
+    fs::write(conf.join("HOSTGW.CFG"), format!("! ROBOT_PROXY {} 127.0.0.1\n", free_port())).unwrap();
+    let run = run_ms(&dir.join("RP/host/MS"), &["--for", "1s", "--speed", "max"]);
+    assert_eq!(run.lines_starting("HostApi:"), host_lines, "{}", run.stderr);
     // The robot build of the same source has every call.
     let robot = run_ms(&dir.join("MS"), &["--for", "1s", "--speed", "max"]);
-    assert_eq!(robot.lines_starting("HostApi:"), ["HostApi: GetRobotDesign ok (ERS-7)", "HostApi: NewSoundVectorData ok"], "{}", robot.stderr);
+    assert_eq!(
+        robot.lines_starting("HostApi:"),
+        ["HostApi: GetRobotDesign ok (ERS-7)", "HostApi: NewSoundVectorData ok", "HostApi: IPStack found"],
+        "{}",
+        robot.stderr
+    );
     assert!(!robot.stderr.contains("not available"), "{}", robot.stderr);
 }

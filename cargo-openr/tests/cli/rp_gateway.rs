@@ -312,5 +312,10 @@ fn a_host_control_loop_drives_the_robot_leg_and_survives_a_host_restart() {
     assert!(second[0].0 > last, "the robot's frames go on from {last}: {second:?}");
     let r_out = rob.stop();
     assert_eq!(r_out.code, Some(0), "the robot kept running to the end: {}", r_out.stderr);
-    assert_eq!(r_out.stderr.matches(&format!("channel {}: host 127.0.0.1:", p[2])).count(), 4, "two hosts came and went on the effector channel: {}", r_out.stderr);
+    assert_eq!(
+        r_out.stderr.matches(&format!("channel {}: host 127.0.0.1:", p[2])).count(),
+        4,
+        "two hosts came and went on the effector channel: {}",
+        r_out.stderr
+    );
 }

@@ -199,6 +199,7 @@ OStatus Shutdown(const OBootCondition& bootCondition)
 
 OStatus Fatal(OFatal fatal)
 {
+    if (openr_rp_unavailable("Fatal")) return oFAIL;
     const openr_host_api* api = openr_host();
     if (api == 0) return oNOT_FOUND;
     api->fatal(fatal);

@@ -12,7 +12,7 @@ namespace {
 const char* const unavailable[] = {
     "ControlPrimitive", "NewSoundVectorData", "DeleteSoundVectorData", "NewCdtVectorData",
     "DeleteCdtVectorData", "SetCdtVectorData", "Shutdown", "ObservePowerStatus",
-    "UnobservePowerStatus", "FindDesignData", "DeleteDesignData",
+    "UnobservePowerStatus", "FindDesignData", "DeleteDesignData", "Fatal",
 };
 const int numUnavailable = sizeof(unavailable) / sizeof(unavailable[0]);
 int reported[sizeof(unavailable) / sizeof(unavailable[0])];

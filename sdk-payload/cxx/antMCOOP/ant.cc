@@ -3,6 +3,8 @@
 // runtime's IPStack emulation (openr_net.h); replies are encoded back into a copy of
 // the whole message struct, sized by its real type (never by msgSize, 1.6).
 #include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <MCOOP.h>
 #include <ant.h>
@@ -24,8 +26,24 @@ extern "C" const struct openr_net_api* openr_net(void)
 boolean antEnvMsg::myOIDValid = FALSE;
 OID     antEnvMsg::myOID;
 
+// The ANT network library is not available to Remote Processing OPEN-R host objects
+// (remote-processing 4): under start-rp-openr the stack is not found, and the first
+// try says why. Host programs use the PC's own sockets.
+static bool rpHostRefusesAnt()
+{
+    const char* v = getenv("OPENR_RP_HOST");
+    if (v == 0 || strcmp(v, "1") != 0) return false;
+    static int reported = 0;
+    if (__sync_bool_compare_and_swap(&reported, 0, 1)) {
+        fprintf(stderr, "antStackRef: the ANT network library is not available to Remote Processing "
+                        "OPEN-R host objects; use the PC's own sockets\n");
+    }
+    return true;
+}
+
 antStackRef::antStackRef(const char* name) : oid(), disp(0)
 {
+    if (rpHostRefusesAnt()) return;
     if (name != 0 && strcmp(name, "IPStack") == 0 && openr_net() != 0) {
         oid = OID((void*)OPENR_NET_IPSTACK_OID);
         return;

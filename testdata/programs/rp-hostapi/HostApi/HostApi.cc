@@ -5,11 +5,14 @@
 // (GetRobotDesign) and one the Installation Guide lists as not
 // available to Remote Processing host objects (NewSoundVectorData).
 // On the robot both succeed; on the host the second returns oFAIL.
+// Then it looks for the IPStack, which host objects do not have either
+// (the ANT network library: host programs use the PC's sockets).
 //
 
 #include <OPENR/OSyslog.h>
 #include <OPENR/OPENRAPI.h>
 #include <OPENR/core_macro.h>
+#include <antEnvBaseMsg.h>
 #include "HostApi.h"
 
 HostApi::HostApi()
@@ -39,6 +42,9 @@ HostApi::DoStart(const OSystemEvent& event)
     OSYSPRINT(("HostApi: NewSoundVectorData %s\n",
                st == oSUCCESS ? "ok" : (st == oFAIL ? "oFAIL" : "other error")));
     if (st == oSUCCESS) OPENR::DeleteSoundVectorData(soundID);
+
+    antStackRef ipstack("IPStack");
+    OSYSPRINT(("HostApi: IPStack %s\n", ipstack.IsValid() ? "found" : "not found"));
     return oSUCCESS;
 }
 
