@@ -80,7 +80,9 @@ fn build_program(src: &Path, root: &Path) -> (usize, Vec<String>) {
     if !ok {
         return (0, vec![format!("{name}: `make install` failed:\n{log}")]);
     }
-    let ms = dir.join("MS");
+    // A remote-processing program whose robot side is only the gateway has its robot
+    // stick in RP/robot/MS.
+    let ms = if dir.join("MS").is_dir() { dir.join("MS") } else { dir.join("RP/robot/MS") };
     let conf = resolve(&ms, "/MS/OPEN-R/MW/CONF").and_then(|c| find_ci(&c, "OBJECT.CFG"));
     let Some(object_cfg) = conf else {
         return (0, vec![format!("{name}: no MS/OPEN-R/MW/CONF/OBJECT.CFG")]);
@@ -90,7 +92,8 @@ fn build_program(src: &Path, root: &Path) -> (usize, Vec<String>) {
     if listed.is_empty() {
         failures.push(format!("{name}: OBJECT.CFG lists no object"));
     }
-    for bin in &listed {
+    // System objects (TCPGW.BIN) come from the SDK root's base tree, not from the program.
+    for bin in listed.iter().filter(|b| !b.to_ascii_uppercase().starts_with("/MS/OPEN-R/SYSTEM/")) {
         match resolve(&ms, bin) {
             None => failures.push(format!("{name}: {bin} listed in OBJECT.CFG was not installed")),
             Some(p) => {
