@@ -86,11 +86,17 @@ fn new_refuses_bad_names_and_existing_dirs() {
 }
 
 /// Every program of `testdata/programs` passes `check` (as a project) and `ms verify`
-/// (services read from the objects) once built.
+/// (services read from the objects) once built. Not yet the remote-processing programs
+/// whose robot side is only the gateway (rp-legs: no `MS/`, its robot stick is
+/// `RP/robot/MS`): `check` does not know TCPGW.BIN's ROBOTGW.CFG services yet.
 #[test]
 fn check_passes_on_every_program() {
-    let mut programs: Vec<PathBuf> =
-        fs::read_dir(repo().join("testdata/programs")).unwrap().flatten().map(|e| e.path()).filter(|p| p.join("Makefile").is_file()).collect();
+    let mut programs: Vec<PathBuf> = fs::read_dir(repo().join("testdata/programs"))
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.join("Makefile").is_file() && p.join("MS").is_dir())
+        .collect();
     programs.sort();
     let root = sdk_root();
     let failures: Vec<String> = std::thread::scope(|s| {
