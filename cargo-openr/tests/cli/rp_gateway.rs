@@ -158,7 +158,9 @@ fn one_gateway_port_for_several_connections_is_warned_about() {
     }
     let rob = robot(&r_ms);
     let mut h = host(&h_ms, &[]);
-    let fan_out = h.wait_for("SampleObserver1::Notify() !!! Hello from SampleSubject2 (#1) !!!", PATIENCE);
+    // Which subject's channel the shared port carries depends on which connects first
+    // (the -BAD shape): data must still reach the observer, from either subject.
+    let fan_out = h.wait_for("SampleObserver1::Notify() !!! Hello from SampleSubject", PATIENCE);
     let h_out = h.stop();
     let r_out = rob.stop();
     assert!(fan_out, "host:\n{}\n{}", h_out.stdout, h_out.stderr);
