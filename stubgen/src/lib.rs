@@ -45,5 +45,5 @@ mod warn;
 pub use cli::run_stubgen2;
 pub use error::{Error, ErrorKind};
 pub use generate::{generate, output_names, summary, write_outputs};
-pub use parse::{parse_files, parse_str, Service, ServiceKind, StubCfg};
+pub use parse::{is_identifier, parse_files, parse_str, Service, ServiceKind, StubCfg};
 pub use warn::{warnings, Warning};

@@ -508,12 +508,15 @@ const CXX_KEYWORDS: &[&str] = &[
     "xor_eq",
 ];
 
+/// `[A-Za-z_][A-Za-z0-9_]*`, keywords included.
+pub fn is_identifier(s: &str) -> bool {
+    let mut bytes = s.bytes();
+    matches!(bytes.next(), Some(b) if b.is_ascii_alphabetic() || b == b'_') && bytes.all(|b| b.is_ascii_alphanumeric() || b == b'_')
+}
+
 /// `[A-Za-z_][A-Za-z0-9_]*` and not a C++ keyword.
 pub(crate) fn is_c_identifier(s: &str) -> bool {
-    let mut bytes = s.bytes();
-    matches!(bytes.next(), Some(b) if b.is_ascii_alphabetic() || b == b'_')
-        && bytes.all(|b| b.is_ascii_alphanumeric() || b == b'_')
-        && !CXX_KEYWORDS.contains(&s)
+    is_identifier(s) && !CXX_KEYWORDS.contains(&s)
 }
 
 #[cfg(test)]

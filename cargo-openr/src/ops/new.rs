@@ -71,71 +71,9 @@ pub struct Created {
     pub objects: Vec<ObjectNames>,
 }
 
-/// C++ keywords and names the OPEN-R headers already use for classes.
-const RESERVED: &[&str] = &[
-    "asm",
-    "auto",
-    "bool",
-    "break",
-    "case",
-    "catch",
-    "char",
-    "class",
-    "const",
-    "continue",
-    "default",
-    "delete",
-    "do",
-    "double",
-    "else",
-    "enum",
-    "explicit",
-    "extern",
-    "false",
-    "float",
-    "for",
-    "friend",
-    "goto",
-    "if",
-    "inline",
-    "int",
-    "long",
-    "mutable",
-    "namespace",
-    "new",
-    "operator",
-    "private",
-    "protected",
-    "public",
-    "register",
-    "return",
-    "short",
-    "signed",
-    "sizeof",
-    "static",
-    "struct",
-    "switch",
-    "template",
-    "this",
-    "throw",
-    "true",
-    "try",
-    "typedef",
-    "typename",
-    "union",
-    "unsigned",
-    "using",
-    "virtual",
-    "void",
-    "volatile",
-    "while",
-    "OObject",
-    "OSubject",
-    "OObserver",
-    "RCRegion",
-    "OPENR",
-    "Self",
-];
+/// Names the OPEN-R headers already use for classes. (The class names are capitalised, so no
+/// C++ keyword, all lower case, can be one.)
+const OPENR_CLASSES: &[&str] = &["OObject", "OSubject", "OObserver", "RCRegion", "OPENR", "Self"];
 
 /// Derives the objects' names from the project name, one per role of the template.
 pub fn object_names(name: &str, template: &Template) -> Result<Vec<ObjectNames>, NewError> {
@@ -165,10 +103,10 @@ pub fn object_names(name: &str, template: &Template) -> Result<Vec<ObjectNames>,
             "observer" => (format!("{class}Observer"), format!("{}O", &stem[..stem.len().min(7)])),
             _ => (class.clone(), stem[..stem.len().min(8)].to_string()),
         };
-        if RESERVED.contains(&class.as_str()) {
-            return Err(bad(format!("the class name `{class}` is reserved in C++ or OPEN-R")));
+        if OPENR_CLASSES.contains(&class.as_str()) {
+            return Err(bad(format!("the class name `{class}` is reserved by OPEN-R")));
         }
-        if !is_c_identifier(&class) {
+        if !stubgen::is_identifier(&class) {
             return Err(bad(format!("`{class}` is not a C identifier")));
         }
         let bin = format!("{bin_stem}.BIN");
@@ -185,10 +123,6 @@ pub fn object_names(name: &str, template: &Template) -> Result<Vec<ObjectNames>,
         return Err(bad(format!("two objects would be installed as `{}`", dup.1.bin)));
     }
     Ok(out)
-}
-
-fn is_c_identifier(s: &str) -> bool {
-    s.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
 #[derive(Serialize)]
