@@ -101,31 +101,62 @@ pub fn run_ms(ms: &Path, args: &[&str]) -> RunOutput {
 
 /// Same, sending `signal` to the runtime after each given delay (from its start).
 pub fn run_ms_signalled(ms: &Path, args: &[&str], signals: &[(std::time::Duration, i32)]) -> RunOutput {
-    use std::io::Read;
+    run_ms_driven(ms, args, None, signals)
+}
+
+extern "C" {
+    #[link_name = "kill"]
+    fn libc_kill(pid: i32, sig: i32) -> i32;
+}
+
+/// Same as [`run_ms`], feeding the runtime's stdin: each chunk is written once `at` has
+/// passed since the start, then stdin is closed (the objects read EOF from then on).
+pub fn run_ms_with_stdin(ms: &Path, args: &[&str], input: &[(std::time::Duration, &[u8])]) -> RunOutput {
+    run_ms_driven(ms, args, Some(input), &[])
+}
+
+/// Runs `cargo openr run <ms> <args>` to completion: stdin null, or fed `input` on its
+/// timetable then closed; each signal sent at its delay; killed (and the test failed)
+/// after 60 s.
+fn run_ms_driven(ms: &Path, args: &[&str], input: Option<&[(std::time::Duration, &[u8])]>, signals: &[(std::time::Duration, i32)]) -> RunOutput {
+    use std::io::{Read, Write};
+    use std::process::Stdio;
     use std::time::{Duration, Instant};
     let mut child = Command::new(exe())
         .env("OPENRSDK_ROOT", sdk_root())
         .arg("run")
         .arg(ms)
         .args(args)
-        .stdin(std::process::Stdio::null())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
+        .stdin(if input.is_some() { Stdio::piped() } else { Stdio::null() })
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    let mut out_pipe = child.stdout.take().unwrap();
-    let mut err_pipe = child.stderr.take().unwrap();
-    let out_t = std::thread::spawn(move || {
-        let mut s = Vec::new();
-        let _ = out_pipe.read_to_end(&mut s);
-        s
-    });
-    let err_t = std::thread::spawn(move || {
-        let mut s = Vec::new();
-        let _ = err_pipe.read_to_end(&mut s);
-        s
-    });
     let start = Instant::now();
+    let in_t = input.map(|input| {
+        let mut stdin = child.stdin.take().unwrap();
+        let chunks: Vec<(Duration, Vec<u8>)> = input.iter().map(|(d, b)| (*d, b.to_vec())).collect();
+        std::thread::spawn(move || {
+            for (at, bytes) in chunks {
+                let now = start.elapsed();
+                if at > now {
+                    std::thread::sleep(at - now);
+                }
+                if stdin.write_all(&bytes).and_then(|_| stdin.flush()).is_err() {
+                    break;
+                }
+            }
+        })
+    });
+    let drain = |mut pipe: Box<dyn Read + Send>| {
+        std::thread::spawn(move || {
+            let mut s = Vec::new();
+            let _ = pipe.read_to_end(&mut s);
+            String::from_utf8_lossy(&s).into_owned()
+        })
+    };
+    let out_t = drain(Box::new(child.stdout.take().unwrap()));
+    let err_t = drain(Box::new(child.stderr.take().unwrap()));
     let mut pending: Vec<(Duration, i32)> = signals.to_vec();
     let status = loop {
         if let Some(st) = child.try_wait().unwrap() {
@@ -146,76 +177,10 @@ pub fn run_ms_signalled(ms: &Path, args: &[&str], signals: &[(std::time::Duratio
         }
         std::thread::sleep(Duration::from_millis(10));
     };
-    RunOutput {
-        code: status.code(),
-        stdout: String::from_utf8_lossy(&out_t.join().unwrap()).into_owned(),
-        stderr: String::from_utf8_lossy(&err_t.join().unwrap()).into_owned(),
+    if let Some(t) = in_t {
+        let _ = t.join();
     }
-}
-
-extern "C" {
-    #[link_name = "kill"]
-    fn libc_kill(pid: i32, sig: i32) -> i32;
-}
-
-/// Same as [`run_ms`], feeding the runtime's stdin: each chunk is written once `at` has
-/// passed since the start, then stdin is closed (the objects read EOF from then on).
-pub fn run_ms_with_stdin(ms: &Path, args: &[&str], input: &[(std::time::Duration, &[u8])]) -> RunOutput {
-    use std::io::{Read, Write};
-    use std::time::{Duration, Instant};
-    let mut child = Command::new(exe())
-        .env("OPENRSDK_ROOT", sdk_root())
-        .arg("run")
-        .arg(ms)
-        .args(args)
-        .stdin(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    let mut stdin = child.stdin.take().unwrap();
-    let chunks: Vec<(Duration, Vec<u8>)> = input.iter().map(|(d, b)| (*d, b.to_vec())).collect();
-    let start = Instant::now();
-    let in_t = std::thread::spawn(move || {
-        for (at, bytes) in chunks {
-            let now = start.elapsed();
-            if at > now {
-                std::thread::sleep(at - now);
-            }
-            if stdin.write_all(&bytes).and_then(|_| stdin.flush()).is_err() {
-                break;
-            }
-        }
-        drop(stdin);
-    });
-    let mut out_pipe = child.stdout.take().unwrap();
-    let mut err_pipe = child.stderr.take().unwrap();
-    let out_t = std::thread::spawn(move || {
-        let mut s = Vec::new();
-        let _ = out_pipe.read_to_end(&mut s);
-        s
-    });
-    let err_t = std::thread::spawn(move || {
-        let mut s = Vec::new();
-        let _ = err_pipe.read_to_end(&mut s);
-        s
-    });
-    let status = loop {
-        if let Some(st) = child.try_wait().unwrap() {
-            break st;
-        }
-        if start.elapsed() > Duration::from_secs(60) {
-            let _ = child.kill();
-            panic!("cargo openr run {} hung for 60 s", ms.display());
-        }
-        std::thread::sleep(Duration::from_millis(10));
-    };
-    let _ = in_t.join();
-    RunOutput {
-        code: status.code(),
-        stdout: String::from_utf8_lossy(&out_t.join().unwrap()).into_owned(),
-        stderr: String::from_utf8_lossy(&err_t.join().unwrap()).into_owned(),
-    }
+    RunOutput { code: status.code(), stdout: out_t.join().unwrap(), stderr: err_t.join().unwrap() }
 }
 
 /// The records of a `--trace` file (JSON lines), in order.
