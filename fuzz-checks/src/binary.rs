@@ -115,9 +115,6 @@ pub fn dns(data: &[u8]) -> bool {
     let Some((rcode, answer)) = dns::parse_response(data, id) else { return false };
     let answers = u16::from_be_bytes([data[6], data[7]]) as usize;
     assert!(rcode <= 15 && answer.addrs.len() <= answers);
-    for n in answer.cname.iter().chain(&answer.ptr) {
-        assert!(n.len() <= 64 * 64, "a name of {} bytes", n.len());
-    }
     true
 }
 
@@ -141,7 +138,6 @@ pub fn vectors(data: &[u8]) -> bool {
                 assert!(slot.values.at(frames - 1).is_some() && slot.values.at(frames).is_none(), "slot {} ends at {frames}", slot.index);
             }
         }
-        assert!(v.duration_frames() == v.slots.iter().map(|s| s.values.duration_frames()).max().unwrap_or(0));
     }
     if let Ok(v) = parse_sound_vector(data) {
         taken = true;
