@@ -106,10 +106,10 @@ pub fn run(plan: &Plan) -> anyhow::Result<()> {
         };
         let tag = if labelled { format!("[robot {k}] ") } else { String::new() };
         if let Some(out) = child.stdout.take() {
-            copiers.push(copy_lines(out, tag.clone(), None, console.clone()));
+            copiers.push(copy_lines(out, tag.clone(), Stream::Stdout, console.clone()));
         }
         if let Some(err) = child.stderr.take() {
-            copiers.push(copy_lines(err, tag, Some(plan.view.clone().map(|v| (k, v))), console.clone()));
+            copiers.push(copy_lines(err, tag, Stream::Stderr(plan.view.clone().map(|v| (k, v))), console.clone()));
         }
         runtimes.push(child);
     }
@@ -178,22 +178,26 @@ fn stop_all<'a>(children: impl IntoIterator<Item = &'a mut Child>) {
     }
 }
 
-/// Robot k's stderr, and the world view to tell where the robot's own view listens.
-type Stderr = Option<Option<(usize, Arc<openr_view::world::Live>)>>;
+/// Which of a robot's outputs a copier carries.
+enum Stream {
+    Stdout,
+    /// Robot k's stderr, with the world view to tell where the robot's own view listens.
+    Stderr(Option<(usize, Arc<openr_view::world::Live>)>),
+}
 
 /// Copies a robot's output line by line with its tag, so lines of robots never mix;
-/// its `Viewing` line goes to the world's view instead (`stderr`).
-fn copy_lines(from: impl Read + Send + 'static, tag: String, stderr: Stderr, console: Arc<Mutex<()>>) -> std::thread::JoinHandle<()> {
+/// its `Viewing` line goes to the world's view instead.
+fn copy_lines(from: impl Read + Send + 'static, tag: String, stream: Stream, console: Arc<Mutex<()>>) -> std::thread::JoinHandle<()> {
     std::thread::spawn(move || {
         for line in BufReader::new(from).split(b'\n').map_while(Result::ok) {
-            if let Some(Some((k, view))) = &stderr {
+            if let Stream::Stderr(Some((k, view))) = &stream {
                 let addr = std::str::from_utf8(&line).ok().and_then(|l| l.strip_prefix("Viewing http://")?.strip_suffix('/')?.parse().ok());
                 if let Some(addr) = addr {
                     view.robot_listening(*k, addr);
                     continue;
                 }
             }
-            let stderr = stderr.is_some();
+            let stderr = matches!(stream, Stream::Stderr(_));
             let _guard = console.lock().unwrap();
             let mut text = tag.clone().into_bytes();
             text.extend_from_slice(&line);
