@@ -2,7 +2,7 @@
 //! life cycle (object-model 2.1): Init all → connect (CONNECT.CFG) → Start all → … →
 //! Stop all → Destroy all.
 use std::ffi::CString;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
 use std::sync::mpsc;
 use std::sync::{Arc, Mutex, OnceLock, RwLock};
@@ -89,17 +89,19 @@ pub enum Ended {
     Fatal(u32),
 }
 
+/// Whether the stick at `ms_dir` is a host program of Remote Processing OPEN-R (it has a
+/// HOSTGW.CFG), however it is started. libOPENR then refuses the calls Sony's host objects
+/// cannot make (remote-processing 4) rather than run them on this PC's emulated robot
+/// instead of the robot at the far end: the caller sets `OPENR_RP_HOST=1`, which libOPENR
+/// reads, before any thread of the process exists.
+pub fn is_rp_host_program(ms_dir: &Path) -> bool {
+    MsDir::new(ms_dir).is_ok_and(|ms| ms.existing_in_program("/MS/OPEN-R/MW/CONF/HOSTGW.CFG").is_some())
+}
+
 /// Loads and runs the stick until it ends; returns how it ended.
 pub fn run(opts: &RunOptions) -> Result<Outcome> {
     crate::net::configure(opts.net.clone());
     let stick = read_stick(opts)?;
-    if stick.ms.existing_in_program("/MS/OPEN-R/MW/CONF/HOSTGW.CFG").is_some() {
-        // A host program of Remote Processing OPEN-R, however started: libOPENR refuses
-        // the calls Sony's host objects cannot make (remote-processing 4), rather than
-        // running them on this PC's emulated robot instead of the robot at the far end.
-        // Set before any thread of the run exists.
-        std::env::set_var("OPENR_RP_HOST", "1");
-    }
     let signals = take_over_process(opts)?;
     let Stick { ms, robot, object_cfg_path, objects, connect_path, connections, duplicates, design_db, images, system_images, mic_pcm, trace } = stick;
     let rt = install(opts, ms, design_db, robot, trace, mic_pcm)?;

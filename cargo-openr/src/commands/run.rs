@@ -172,6 +172,10 @@ pub fn exec(args: Args, given: &clap::ArgMatches, shell: &mut Shell) -> anyhow::
     shell.set_quiet(args.quiet);
     let world = check_sim_options(&args)?;
     let ms_dir = args.ms_dirs[0].clone();
+    if args.sim != Sim::Mujoco && boot::is_rp_host_program(&ms_dir) {
+        // Before the view's server or anything else starts a thread.
+        std::env::set_var("OPENR_RP_HOST", "1");
+    }
     let project = ms_dir.parent().map(PathBuf::from);
     let cfg = config::resolve(&ConfigInputs {
         sdk: args.sdk.clone(),
