@@ -28,7 +28,9 @@ OID     antEnvMsg::myOID;
 
 // The ANT network library is not available to Remote Processing OPEN-R host objects
 // (remote-processing 4): under start-rp-openr the stack is not found, and the first
-// try says why. Host programs use the PC's own sockets.
+// try says why. Host programs use the PC's own sockets. (libOPENR's RPHost.cc reads the
+// same variable; calling it from here would break Makefiles that list -lOPENR before
+// -lantMCOOP, as Sony's do, since a static archive only resolves names seen before it.)
 static bool rpHostRefusesAnt()
 {
     const char* v = getenv("OPENR_RP_HOST");
