@@ -70,10 +70,6 @@ pub(super) fn serve_calls(s: &mut TcpStream) {
     }
 }
 
-fn u32_at(b: &[u8], at: usize) -> Option<u32> {
-    Some(u32::from_le_bytes(b.get(at..at + 4)?.try_into().ok()?))
-}
-
 /// One call against this robot.
 fn execute(api: u8, args: &[u8]) -> Vec<u8> {
     let mut out = Vec::new();
@@ -85,6 +81,7 @@ fn execute(api: u8, args: &[u8]) -> Vec<u8> {
 
 fn run(api: u8, args: &[u8], out: &mut Vec<u8>) -> Option<u32> {
     use crate::robot_api as r;
+    let mut a = wire::In::new(args);
     Some(match api {
         OPEN_PRIMITIVE => {
             let loc = std::ffi::CString::new(args).ok()?;
@@ -94,13 +91,12 @@ fn run(api: u8, args: &[u8], out: &mut Vec<u8>) -> Option<u32> {
             out.extend_from_slice(&id.to_le_bytes());
             st
         }
-        CLOSE_PRIMITIVE => r::close_primitive(u32_at(args, 0)?),
+        CLOSE_PRIMITIVE => r::close_primitive(a.u32().ok()?),
         JOINT_GAIN => {
-            let op = u32_at(args, 0)? as i32;
-            let id = u32_at(args, 4)?;
+            let (op, id) = (a.i32().ok()?, a.u32().ok()?);
             let mut gains = [0u16; 6];
-            for (k, g) in gains.iter_mut().enumerate() {
-                *g = u16::from_le_bytes(args.get(8 + 2 * k..10 + 2 * k)?.try_into().ok()?);
+            for g in &mut gains {
+                *g = a.u16().ok()?;
             }
             // SAFETY: six live words.
             let st = unsafe { r::joint_gain(op, id, gains.as_mut_ptr()) };
@@ -109,7 +105,7 @@ fn run(api: u8, args: &[u8], out: &mut Vec<u8>) -> Option<u32> {
         }
         JOINT_VALUE | SENSOR_VALUE => {
             let mut v = [0u8; 16];
-            let id = u32_at(args, 0)?;
+            let id = a.u32().ok()?;
             // SAFETY: 16 live bytes, the size of OJointValue / OSensorValue.
             let st = unsafe {
                 if api == JOINT_VALUE {
@@ -122,7 +118,7 @@ fn run(api: u8, args: &[u8], out: &mut Vec<u8>) -> Option<u32> {
             st
         }
         SET_MOTOR_POWER => {
-            crate::host_api::set_motor_power(u32_at(args, 0)? as i32);
+            crate::host_api::set_motor_power(a.i32().ok()?);
             O_SUCCESS
         }
         POWER_STATUS => {
@@ -135,4 +131,17 @@ fn run(api: u8, args: &[u8], out: &mut Vec<u8>) -> Option<u32> {
         }
         _ => return None,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_short_or_unknown_call_is_an_invalid_argument() {
+        let invalid = crate::robot::status::O_INVALID_ARG.to_le_bytes().to_vec();
+        assert_eq!(execute(CLOSE_PRIMITIVE, &[1, 2]), invalid, "3 bytes short of an id");
+        assert_eq!(execute(JOINT_GAIN, &[0; 19]), invalid, "one byte short of six gains");
+        assert_eq!(execute(99, &[]), invalid, "no such call");
+    }
 }

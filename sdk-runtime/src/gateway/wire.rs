@@ -2,6 +2,9 @@
 //! `type:u8, length:u32, payload`, one TCP connection per channel.
 use std::io::{self, Read, Write};
 
+// The payloads' integers and u16-length strings are the robot protocol's.
+pub use crate::peer::wire::{In, Out};
+
 pub const HELLO: u8 = 1;
 pub const DATA: u8 = 2;
 pub const READY_ASSERT: u8 = 3;
@@ -51,34 +54,19 @@ pub struct Hello {
 
 impl Hello {
     pub fn encode(&self) -> Vec<u8> {
-        let mut b = vec![VERSION, self.suffix];
-        b.extend_from_slice(&self.port.to_le_bytes());
-        for s in [&self.name, &self.place] {
-            b.extend_from_slice(&(s.len() as u16).to_le_bytes());
-            b.extend_from_slice(s.as_bytes());
-        }
-        b
+        let mut b = Out::default();
+        b.u8(VERSION).u8(self.suffix).u16(self.port).str(&self.name).str(&self.place);
+        b.0
     }
 
     pub fn decode(b: &[u8]) -> Result<Hello, String> {
-        let bad = || "a malformed HELLO (not a cargo-openr gateway?)".to_string();
-        if b.len() < 4 {
-            return Err(bad());
+        let bad = |_| "a malformed HELLO (not a cargo-openr gateway?)".to_string();
+        let mut i = In::new(b);
+        let (version, suffix, port) = (i.u8().map_err(bad)?, i.u8().map_err(bad)?, i.u16().map_err(bad)?);
+        if version != VERSION {
+            return Err(format!("gateway protocol version {version} (this side speaks {VERSION})"));
         }
-        if b[0] != VERSION {
-            return Err(format!("gateway protocol version {} (this side speaks {VERSION})", b[0]));
-        }
-        let port = u16::from_le_bytes([b[2], b[3]]);
-        let mut at = 4;
-        let mut text = || -> Result<String, String> {
-            let n = u16::from_le_bytes([*b.get(at).ok_or_else(bad)?, *b.get(at + 1).ok_or_else(bad)?]) as usize;
-            let s = b.get(at + 2..at + 2 + n).ok_or_else(bad)?;
-            at += 2 + n;
-            String::from_utf8(s.to_vec()).map_err(|_| bad())
-        };
-        let name = text()?;
-        let place = text()?;
-        Ok(Hello { suffix: b[1], port, name, place })
+        Ok(Hello { suffix, port, name: i.str().map_err(bad)?, place: i.str().map_err(bad)? })
     }
 
     /// The DataType part of the name (`char` of `TCPGateway.Send.char.S`).
