@@ -195,7 +195,7 @@ pub fn hostgw(data: &[u8]) -> bool {
     let mut printed = String::new();
     let mut want = Vec::new();
     for (i, g) in gw.iter().enumerate() {
-        let addr = |a: &Option<String>| a.as_ref().map_or(String::new(), |a| format!(" {a}"));
+        let addr = |a: &Option<std::net::Ipv4Addr>| a.as_ref().map_or(String::new(), |a| format!(" {a}"));
         match g {
             GwLine::Proxy { port, addr: a, .. } => {
                 printed += &format!("!ROBOT_PROXY {port}{}\n", addr(a));

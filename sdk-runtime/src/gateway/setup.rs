@@ -77,17 +77,17 @@ type Prepared = (Vec<Arc<Link>>, Vec<Target>);
 /// Checks the lines as a whole and makes each one's link and target.
 fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::result::Result<Prepared, String> {
     let proxy_addr = lines.iter().find_map(|l| match l {
-        GwLine::Proxy { addr, .. } => addr.clone(),
+        GwLine::Proxy { addr, .. } => *addr,
         _ => None,
     });
-    let mut seen_ports: HashMap<(Option<String>, u16), usize> = HashMap::new();
+    let mut seen_ports: HashMap<(Option<Ipv4Addr>, u16), usize> = HashMap::new();
     let mut seen_names: HashMap<&str, usize> = HashMap::new();
     let (mut subjects, mut observers, mut proxies) = (0, 0, 0);
     let (mut links, mut targets) = (Vec::new(), Vec::new());
     for l in lines {
         let (line, name, port, addr, options) = match l {
-            GwLine::Proxy { line, port, addr } => (*line, "TCPGateway.Proxy.AperiosMessage.P", *port, addr.clone(), &[][..]),
-            GwLine::Service { line, name, port, addr, options } => (*line, name.as_str(), *port, addr.clone(), &options[..]),
+            GwLine::Proxy { line, port, addr } => (*line, "TCPGateway.Proxy.AperiosMessage.P", *port, *addr, &[][..]),
+            GwLine::Service { line, name, port, addr, options } => (*line, name.as_str(), *port, *addr, &options[..]),
         };
         let place = format!("{file}:{line}");
         let suffix = *name.as_bytes().last().unwrap_or(&b'P');
@@ -105,7 +105,7 @@ fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::re
         if let Some(prev) = seen_names.insert(name, line).filter(|_| suffix != b'P') {
             return Err(format!("{place}: service {name} is already line {prev}: each line is its own service"));
         }
-        let key = (if host { addr.clone().or(proxy_addr.clone()) } else { None }, port);
+        let key = (if host { addr.or(proxy_addr) } else { None }, port);
         if let Some(prev) = seen_ports.insert(key, line) {
             return Err(format!("{place}: port {port} is already line {prev}: one channel per port{}", if host { " and robot" } else { "" }));
         }
@@ -117,8 +117,7 @@ fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::re
         }
         let hello = Hello { suffix, port, name: name.to_string(), place: place.clone() };
         let target = if host {
-            let ip = addr.or(proxy_addr.clone()).ok_or_else(|| format!("{place}: no robot address, and no `!ROBOT_PROXY` line to take it from"))?;
-            let ip: Ipv4Addr = ip.parse().map_err(|_| format!("{place}: `{ip}` is not an IPv4 address"))?;
+            let ip = addr.or(proxy_addr).ok_or_else(|| format!("{place}: no robot address, and no `!ROBOT_PROXY` line to take it from"))?;
             let (a, p) = net.remote(u32::from(ip), port, "gateway channel");
             Target::Connect(SocketAddrV4::new(Ipv4Addr::from(a), p))
         } else {
@@ -141,9 +140,8 @@ fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::re
 fn warn_shared_services(rt: &Runtime, links: &[Arc<Link>]) {
     let design = rt.design.to_string_lossy().into_owned();
     let Ok((path, conns, _)) = crate::cfg::connect_cfg(&rt.ms, &design) else { return };
-    let distinct = &conns;
     for l in links.iter().filter(|l| l.hello.suffix != b'P') {
-        let uses: Vec<usize> = distinct.iter().filter(|c| c.subject == l.hello.name || c.observer == l.hello.name).map(|c| c.line).collect();
+        let uses: Vec<usize> = conns.iter().filter(|c| c.subject == l.hello.name || c.observer == l.hello.name).map(|c| c.line).collect();
         if uses.len() > 1 {
             let lines: Vec<String> = uses.iter().map(usize::to_string).collect();
             rt.diag.warn(&format!(
@@ -158,5 +156,37 @@ fn warn_shared_services(rt: &Runtime, links: &[Arc<Link>]) {
                 lines.join(", ")
             ));
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The host side's refusal of `text` (no socket is opened on the host side).
+    fn host_error(text: &str) -> String {
+        let lines = gwcfg::parse("HOSTGW.CFG", text).expect("the line syntax is fine");
+        let net = NetConfig::new(&Default::default(), true);
+        match prepare("HOSTGW.CFG", &lines, true, &net) {
+            Ok(_) => panic!("accepted:\n{text}"),
+            Err(e) => e,
+        }
+    }
+
+    #[test]
+    fn a_host_file_that_cannot_make_its_channels_is_refused_at_its_line() {
+        let e = host_error("!ROBOT_PROXY 59001 127.0.0.1\n!ROBOT_PROXY 59002 127.0.0.1\n");
+        assert_eq!(e, "HOSTGW.CFG:2: a second proxy line (one per gateway)");
+        let e = host_error("A.B.char.S 59002 127.0.0.1\nA.B.char.S 59003 127.0.0.1\n");
+        assert_eq!(e, "HOSTGW.CFG:2: service A.B.char.S is already line 1: each line is its own service");
+        let e = host_error("A.B.char.S 59002 127.0.0.1\nA.C.char.O 59002 127.0.0.1\n");
+        assert_eq!(e, "HOSTGW.CFG:2: port 59002 is already line 1: one channel per port and robot");
+        let e = host_error("A.B.char.S 59002\n");
+        assert_eq!(e, "HOSTGW.CFG:1: no robot address, and no `!ROBOT_PROXY` line to take it from");
+        let many: String = (0..=openr::MAX_SUBJECTS).map(|k| format!("A.S{k}.char.S {} 127.0.0.1\n", 59100 + k)).collect();
+        assert!(host_error(&many).ends_with("the gateway has as many service slots)"), "{}", host_error(&many));
+        // Two robots may use the same port.
+        let lines = gwcfg::parse("HOSTGW.CFG", "A.B.char.S 59002 127.0.0.1\nA.C.char.O 59002 127.0.0.2\n").unwrap();
+        assert!(prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), true)).is_ok());
     }
 }

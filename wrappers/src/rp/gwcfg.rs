@@ -1,4 +1,5 @@
 //! HOSTGW.CFG / ROBOTGW.CFG (remote-processing 3.1, 3.2): one gateway line per channel.
+use std::net::Ipv4Addr;
 use std::path::Path;
 
 use crate::error::Error;
@@ -7,9 +8,9 @@ use crate::error::Error;
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum GwLine {
     /// `!ROBOT_PROXY <port> <addr>` (host) or `TCPGateway.Proxy.AperiosMessage.P <port>` (robot).
-    Proxy { line: usize, port: u16, addr: Option<String> },
+    Proxy { line: usize, port: u16, addr: Option<Ipv4Addr> },
     /// `<Obj>.<Svc>.<Type>.S|O <port> [addr] [key=value…]`.
-    Service { line: usize, name: String, port: u16, addr: Option<String>, options: Vec<String> },
+    Service { line: usize, name: String, port: u16, addr: Option<Ipv4Addr>, options: Vec<String> },
 }
 
 /// Parses a gateway file's text; errors read `<file>:<line>: <message>`.
@@ -39,8 +40,8 @@ pub fn parse(file: &str, text: &str) -> Result<Vec<GwLine>, Error> {
         for f in fields {
             if f.contains('=') {
                 options.push(f.to_string());
-            } else if addr.is_none() && options.is_empty() && f.parse::<std::net::Ipv4Addr>().is_ok() {
-                addr = Some(f.to_string());
+            } else if let Some(a) = f.parse::<Ipv4Addr>().ok().filter(|_| addr.is_none() && options.is_empty()) {
+                addr = Some(a);
             } else {
                 return Err(err(format!("unexpected field `{f}` (expected an IPv4 address or key=value)")));
             }
@@ -77,8 +78,11 @@ mod tests {
     fn host_file_with_blank_after_bang_crlf_and_options() {
         let text = "\r\n# host\r\n! ROBOT_PROXY 59001 10.0.1.100\r\nTCPGateway.Cam.Frame.S\t59002  10.0.1.100\r\nCore.Stdin.Expr.O 1094 dmax=8 dmin=1\r\n";
         let v = parse("HOSTGW.CFG", text).unwrap();
-        assert_eq!(v[0], GwLine::Proxy { line: 3, port: 59001, addr: Some("10.0.1.100".into()) });
-        assert_eq!(v[1], GwLine::Service { line: 4, name: "TCPGateway.Cam.Frame.S".into(), port: 59002, addr: Some("10.0.1.100".into()), options: vec![] });
+        assert_eq!(v[0], GwLine::Proxy { line: 3, port: 59001, addr: Some(Ipv4Addr::new(10, 0, 1, 100)) });
+        assert_eq!(
+            v[1],
+            GwLine::Service { line: 4, name: "TCPGateway.Cam.Frame.S".into(), port: 59002, addr: Some(Ipv4Addr::new(10, 0, 1, 100)), options: vec![] }
+        );
         assert_eq!(
             v[2],
             GwLine::Service { line: 5, name: "Core.Stdin.Expr.O".into(), port: 1094, addr: None, options: vec!["dmax=8".into(), "dmin=1".into()] }
