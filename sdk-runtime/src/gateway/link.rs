@@ -275,4 +275,35 @@ mod tests {
         assert!(why.starts_with("A.x.char.S is a subject (.S) and the far side's B.y.char.S (ROBOTGW.CFG:2) is a subject (.S) too"), "{why}");
         assert!(mismatch(&hello(b'O', "A.x.char.O"), &hello(b'P', "P")).is_some());
     }
+
+    /// Our side's handshake against a far side that answers with `frames` (real loopback
+    /// sockets); its error.
+    fn handshake_against(frames: Vec<(u8, Vec<u8>)>) -> String {
+        let l = TcpListener::bind("127.0.0.1:0").unwrap();
+        let addr = l.local_addr().unwrap();
+        let far = std::thread::spawn(move || {
+            let (mut s, _) = l.accept().unwrap();
+            let _ = wire::read_frame(&mut s);
+            for (kind, p) in frames {
+                wire::write_frame(&mut s, kind, &p).unwrap();
+            }
+        });
+        let link = Link::new(0, "HOSTGW.CFG:2".into(), hello(b'S', "A.x.char.S"));
+        let mut s = TcpStream::connect(addr).unwrap();
+        let e = link.handshake(&mut s).unwrap_err();
+        far.join().unwrap();
+        e
+    }
+
+    #[test]
+    fn a_far_side_that_is_not_a_gateway_or_refuses_is_named() {
+        let e = handshake_against(vec![(wire::DATA, b"x".to_vec())]);
+        assert_eq!(e, "HOSTGW.CFG:2: channel 59002: the far side is not a cargo-openr gateway (frame type 2 before HELLO)");
+        let e = handshake_against(vec![(wire::ERROR, b"no such line".to_vec())]);
+        assert_eq!(e, "HOSTGW.CFG:2: channel 59002: refused by the far side: no such line");
+        let e = handshake_against(vec![(wire::HELLO, vec![9, b'O', 0, 0])]);
+        assert_eq!(e, "HOSTGW.CFG:2: channel 59002: gateway protocol version 9 (this side speaks 1)");
+        let e = handshake_against(vec![]);
+        assert!(e.starts_with("HOSTGW.CFG:2: channel 59002: no HELLO from the far side"), "{e}");
+    }
 }
