@@ -95,7 +95,7 @@ pub enum Ended {
 /// instead of the robot at the far end: the caller sets `OPENR_RP_HOST=1`, which libOPENR
 /// reads, before any thread of the process exists.
 pub fn is_rp_host_program(ms_dir: &Path) -> bool {
-    MsDir::new(ms_dir).is_ok_and(|ms| ms.existing_in_program("/MS/OPEN-R/MW/CONF/HOSTGW.CFG").is_some())
+    MsDir::new(ms_dir).is_ok_and(|ms| cfg::is_rp(&ms, "HOSTGW.CFG"))
 }
 
 /// Loads and runs the stick until it ends; returns how it ended.

@@ -125,7 +125,7 @@ pub struct Connection {
 
 /// Whether the program's MS has MW/CONF/`file` (HOSTGW.CFG, ROBOTGW.CFG): a Remote
 /// Processing program.
-fn is_rp(ms: &MsDir, file: &str) -> bool {
+pub(crate) fn is_rp(ms: &MsDir, file: &str) -> bool {
     ms.existing_in_program(&format!("/MS/OPEN-R/MW/CONF/{file}")).is_some()
 }
 

@@ -162,9 +162,8 @@ impl Object for Gateway {
     /// Readiness belongs to the far side: nothing to withdraw here.
     fn stop(&mut self, _ctx: &mut Context) {}
 
-    fn ready(&mut self, ctx: &mut Context, event: ReadyEvent) {
+    fn ready(&mut self, _ctx: &mut Context, event: ReadyEvent) {
         let Some(k) = self.ends.iter().position(|e| matches!(e, End::Sub(s) if s.is(&event))) else { return };
-        let _ = ctx;
         if let Some(link) = self.link(k) {
             link.send(if event.is_assert() { wire::READY_ASSERT } else { wire::READY_DEASSERT }, &[]);
         }
