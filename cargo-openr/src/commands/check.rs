@@ -21,9 +21,13 @@ pub struct Args {
 
 pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let cfg = config::resolve(&ConfigInputs { design: args.design, project: Some(args.dir.clone()), ..Default::default() })?;
-    let opts = check::project_inputs(&args.dir, &cfg.design.value)?;
-    let report = check::check(&opts)?;
-    finish(&report, args.message_format, &args.dir.display().to_string(), shell)
+    let mut report = Report::default();
+    let mut sticks = Vec::new();
+    for opts in check::project_inputs(&args.dir, &cfg.design.value)? {
+        report.diagnostics.extend(check::check(&opts)?.diagnostics);
+        sticks.push(opts.ms.strip_prefix(&args.dir).unwrap_or(&opts.ms).display().to_string());
+    }
+    finish(&report, args.message_format, &format!("{} ({})", args.dir.display(), sticks.join(", ")), shell)
 }
 
 /// Prints the findings and a summary; an error when any finding is an error.

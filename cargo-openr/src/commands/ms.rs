@@ -33,7 +33,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let Action::Verify { ms_dir, design, message_format } = args.action;
     let project = ms_dir.parent().map(PathBuf::from);
     let cfg = config::resolve(&ConfigInputs { design, project, ..Default::default() })?;
-    let opts = CheckOptions { ms: ms_dir.clone(), stubs: Vec::new(), ocfs: Vec::new(), design: cfg.design.value };
+    let opts = CheckOptions { ms: ms_dir.clone(), stubs: Vec::new(), ocfs: Vec::new(), design: cfg.design.value, loaded_stubs_only: false };
     let report = check::check(&opts)?;
     super::check::finish(&report, message_format, &ms_dir.display().to_string(), shell)
 }

@@ -15,8 +15,11 @@
 //! | E0008 | a stub.cfg is rejected by stubgen2 (e.g. declared counts differ from the services) |
 //! | E0009 | an `.ocf` file is malformed |
 //! | E0010 | a connection is listed twice |
+//! | E0011 | a Remote Processing gateway file (ROBOTGW.CFG, HOSTGW.CFG) is malformed or names a service twice, or a host stick loads TCPGW.BIN |
 //! | W0001 | a name under `MS/OPEN-R` has lower-case letters (FAT stores it upper case) |
-//! | W0002 | a registered subject or observer is never connected |
+//! | W0002 | a registered subject or observer (or gateway service) is never connected |
+//! | W0003 | a gateway service is in more than one connection, or TCPGW.BIN has no ROBOTGW.CFG |
+//! | W0004 | a connection is listed twice on a Remote Processing stick (left out, as the runtime does) |
 use std::path::PathBuf;
 
 use serde::Serialize;

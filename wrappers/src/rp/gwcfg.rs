@@ -15,6 +15,12 @@ pub enum GwLine {
 
 /// Parses a gateway file's text; errors read `<file>:<line>: <message>`.
 pub fn parse(file: &str, text: &str) -> Result<Vec<GwLine>, Error> {
+    parse_lines(text).map_err(|(line, m)| Error::usage(format!("{file}:{line}: {m}")))
+}
+
+/// As [`parse`], the error as (line, message) for callers that place it themselves
+/// (`cargo openr check`).
+pub fn parse_lines(text: &str) -> Result<Vec<GwLine>, (usize, String)> {
     let mut out = Vec::new();
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
@@ -22,7 +28,7 @@ pub fn parse(file: &str, text: &str) -> Result<Vec<GwLine>, Error> {
         if l.is_empty() || l.starts_with('#') {
             continue;
         }
-        let err = |m: String| Error::usage(format!("{file}:{line}: {m}"));
+        let err = |m: String| (line, m);
         let (proxy, rest) = match l.strip_prefix('!') {
             Some(r) => {
                 let r = r.trim_start();

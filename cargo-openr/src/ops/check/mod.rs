@@ -11,14 +11,18 @@
 //!   data is taken as one of its services. An object that builds names at run time
 //!   escapes this heuristic (its connections are then reported as unknown services).
 //!
-//! The system services of `OVirtualRobotComm` and `OVirtualRobotAudioComm` are known.
-use std::collections::{BTreeMap, HashSet};
+//! The system services of `OVirtualRobotComm` and `OVirtualRobotAudioComm` are known, and
+//! on a Remote Processing stick those of its TCP gateway, read from ROBOTGW.CFG or
+//! HOSTGW.CFG ([`rp`]).
+use std::collections::{BTreeMap, HashMap, HashSet};
 use std::path::{Path, PathBuf};
 
 use sdk_runtime::cfg::{lines_for_design, CfgFile};
 use sdk_runtime::ms::{is_eight_dot_three, MsDir};
 
 use crate::ops::diag::{Diagnostic, Report};
+
+mod rp;
 
 /// The services the system objects register (object-model 1.4).
 pub const SYSTEM_SERVICES: &[&str] = &[
@@ -43,29 +47,45 @@ pub struct CheckOptions {
     pub ocfs: Vec<PathBuf>,
     /// Robot design whose CFG sections apply.
     pub design: String,
+    /// Take a stub's services only if its object is loaded: the stubs are shared by the
+    /// sticks of a Remote Processing program's sides (`RP/robot`, `RP/host`).
+    pub loaded_stubs_only: bool,
 }
 
-/// Finds what `check` lints in the project at `dir`: its `MS/` tree, every `stub.cfg` and
-/// `.ocf` outside it (hidden directories and `target/` skipped).
-pub fn project_inputs(dir: &Path, design: &str) -> anyhow::Result<CheckOptions> {
-    let ms = dir.join("MS");
-    if !ms.join("OPEN-R").is_dir() {
-        anyhow::bail!("`{}` is not an OPEN-R project: no MS/OPEN-R directory (for a bare Memory Stick tree use `cargo openr ms verify`)", dir.display());
+/// The sides of a Remote Processing program without a stick of its own (Sony's layout
+/// when the robot runs only the gateway, as in LMasterRSlave7/RP).
+const RP_SIDES: [&str; 2] = ["RP/robot/MS", "RP/host/MS"];
+
+/// Finds what `check` lints in the project at `dir`: its `MS/` tree — or, for a Remote
+/// Processing program with none, the sticks of its sides ([`RP_SIDES`]) — and every
+/// `stub.cfg` and `.ocf` outside them (hidden directories and `target/` skipped).
+pub fn project_inputs(dir: &Path, design: &str) -> anyhow::Result<Vec<CheckOptions>> {
+    let own = dir.join("MS");
+    let sides = !own.join("OPEN-R").is_dir();
+    let sticks: Vec<PathBuf> = if sides { RP_SIDES.iter().map(|s| dir.join(s)).filter(|ms| ms.join("OPEN-R").is_dir()).collect() } else { vec![own] };
+    if sticks.is_empty() {
+        anyhow::bail!(
+            "`{}` is not an OPEN-R project: no MS/OPEN-R directory, nor RP/robot/MS or RP/host/MS (for a bare Memory Stick tree use `cargo openr ms verify`)",
+            dir.display()
+        );
     }
     let mut stubs = Vec::new();
     let mut ocfs = Vec::new();
-    collect_sources(dir, &ms, &mut stubs, &mut ocfs, 0);
+    collect_sources(dir, &sticks, &mut stubs, &mut ocfs, 0);
     stubs.sort();
     ocfs.sort();
-    Ok(CheckOptions { ms, stubs, ocfs, design: design.to_string() })
+    Ok(sticks
+        .into_iter()
+        .map(|ms| CheckOptions { ms, stubs: stubs.clone(), ocfs: ocfs.clone(), design: design.to_string(), loaded_stubs_only: sides })
+        .collect())
 }
 
-fn collect_sources(dir: &Path, ms: &Path, stubs: &mut Vec<PathBuf>, ocfs: &mut Vec<PathBuf>, depth: usize) {
+fn collect_sources(dir: &Path, ms: &[PathBuf], stubs: &mut Vec<PathBuf>, ocfs: &mut Vec<PathBuf>, depth: usize) {
     let Ok(rd) = std::fs::read_dir(dir) else { return };
     for e in rd.flatten() {
         let path = e.path();
         let name = e.file_name().to_string_lossy().into_owned();
-        if name.starts_with('.') || path == ms {
+        if name.starts_with('.') || ms.contains(&path) {
             continue;
         }
         let Ok(ft) = e.file_type() else { continue };
@@ -86,6 +106,8 @@ fn collect_sources(dir: &Path, ms: &Path, stubs: &mut Vec<PathBuf>, ocfs: &mut V
 struct Origin {
     file: PathBuf,
     line: Option<usize>,
+    /// A line of the gateway's CFG file.
+    gateway: bool,
 }
 
 /// Lints a Memory Stick tree (and the sources given with it).
@@ -100,11 +122,12 @@ pub fn check(opts: &CheckOptions) -> anyhow::Result<Report> {
     check_names(&open_r, &shown, &mut report);
 
     let mut services: BTreeMap<String, Origin> = BTreeMap::new();
+    let mut stub_services = Vec::new();
     for stub in &opts.stubs {
         match stubgen::parse_files(std::slice::from_ref(stub)) {
             Ok(cfg) => {
                 for s in cfg.subjects.iter().chain(&cfg.observers) {
-                    services.entry(s.name.clone()).or_insert(Origin { file: s.file.clone(), line: Some(s.line) });
+                    stub_services.push((s.name.clone(), Origin { file: s.file.clone(), line: Some(s.line), gateway: false }));
                 }
             }
             Err(e) => {
@@ -127,12 +150,26 @@ pub fn check(opts: &CheckOptions) -> anyhow::Result<Report> {
         }
     }
 
-    for (bin, found) in check_objects(&ms, &opts.design, &shown, &mut report) {
-        for name in found {
-            services.entry(name).or_insert(Origin { file: bin.clone(), line: None });
+    let loaded = check_objects(&ms, &opts.design, &shown, &mut report);
+    let object_of = |name: &str| name.split('.').next().unwrap_or("").to_string();
+    let loaded_objects: HashSet<String> = loaded.objects.iter().flat_map(|(_, found)| found.iter().map(|n| object_of(n))).collect();
+    for (name, origin) in stub_services {
+        if !opts.loaded_stubs_only || loaded_objects.contains(&object_of(&name)) {
+            services.entry(name).or_insert(origin);
         }
     }
-    check_connections(&ms, &opts.design, &services, &shown, &mut report);
+    for (bin, found) in loaded.objects {
+        for name in found {
+            services.entry(name).or_insert(Origin { file: bin.clone(), line: None, gateway: false });
+        }
+    }
+    let robot_gateway = loaded.robot_gateway.map(|line| (loaded.object_cfg.as_path(), line));
+    let gateway = rp::services(&ms, robot_gateway, &shown, &mut report);
+    for g in &gateway {
+        services.entry(g.name.clone()).or_insert(Origin { file: g.file.clone(), line: Some(g.line), gateway: true });
+    }
+    let unknown = |name: &str| rp::unknown_help(&ms, name, &gateway, robot_gateway.is_some());
+    check_connections(&ms, &opts.design, &services, &unknown, &shown, &mut report);
     Ok(report)
 }
 
@@ -167,9 +204,19 @@ fn check_names(dir: &Path, shown: &dyn Fn(&Path) -> PathBuf, report: &mut Report
     }
 }
 
-/// OBJECT.CFG: every entry exists and is a loadable object. Returns, per loadable
-/// object, the service names found in its read-only data.
-fn check_objects(ms: &MsDir, design: &str, shown: &dyn Fn(&Path) -> PathBuf, report: &mut Report) -> Vec<(PathBuf, Vec<String>)> {
+/// What OBJECT.CFG loads.
+#[derive(Default)]
+struct Loaded {
+    /// OBJECT.CFG as shown.
+    object_cfg: PathBuf,
+    /// Per loadable object, the service names found in its read-only data.
+    objects: Vec<(PathBuf, Vec<String>)>,
+    /// The line listing the robot's TCP gateway, if one does.
+    robot_gateway: Option<usize>,
+}
+
+/// OBJECT.CFG: every entry exists and is a loadable object.
+fn check_objects(ms: &MsDir, design: &str, shown: &dyn Fn(&Path) -> PathBuf, report: &mut Report) -> Loaded {
     let cfg = match CfgFile::find(ms, "OBJECT.CFG") {
         Ok(Some(cfg)) => cfg,
         Ok(None) => {
@@ -178,17 +225,18 @@ fn check_objects(ms: &MsDir, design: &str, shown: &dyn Fn(&Path) -> PathBuf, rep
                     .at(shown(&ms.root().join("OPEN-R/MW/CONF/OBJECT.CFG")), None)
                     .help("list the objects to load, one `/MS/OPEN-R/MW/OBJS/NAME.BIN` a line"),
             );
-            return Vec::new();
+            return Loaded::default();
         }
         Err(e) => {
             report.push(Diagnostic::error("E0002", e.to_string()));
-            return Vec::new();
+            return Loaded::default();
         }
     };
     let file = shown(&cfg.path);
-    let mut out = Vec::new();
+    let mut out = Loaded { object_cfg: file.clone(), ..Loaded::default() };
     let lines = lines_for_design(&cfg.text, design);
-    if lines.is_empty() {
+    // A host stick may run its gateway alone (a relay; remote-processing 4).
+    if lines.is_empty() && ms.existing_in_program("/MS/OPEN-R/MW/CONF/HOSTGW.CFG").is_none() {
         report.push(Diagnostic::error("E0002", format!("OBJECT.CFG lists no object for robot design {design}")).at(&file, None));
     }
     for line in lines {
@@ -201,7 +249,13 @@ fn check_objects(ms: &MsDir, design: &str, shown: &dyn Fn(&Path) -> PathBuf, rep
             );
             continue;
         }
-        let Some(host) = ms.existing(ms_path).filter(|p| p.is_file()) else {
+        let found = ms.existing(ms_path).filter(|p| p.is_file());
+        let image = found.as_deref().and_then(|p| std::fs::read(p).ok());
+        if rp::is_robot_gateway(ms_path, found.as_ref().and(image.as_deref())) {
+            out.robot_gateway = Some(line.number);
+            continue;
+        }
+        let Some(host) = found else {
             report.push(
                 Diagnostic::error("E0002", format!("object `{ms_path}` not found on the Memory Stick"))
                     .at(&file, Some(line.number))
@@ -236,7 +290,7 @@ fn check_objects(ms: &MsDir, design: &str, shown: &dyn Fn(&Path) -> PathBuf, rep
             );
             continue;
         }
-        out.push((shown(&host), services_in_rodata(&elf)));
+        out.objects.push((shown(&host), services_in_rodata(&elf)));
     }
     out
 }
@@ -307,7 +361,14 @@ fn data_name(name: &str) -> &str {
     name.split('.').nth(2).unwrap_or("")
 }
 
-fn check_connections(ms: &MsDir, design: &str, services: &BTreeMap<String, Origin>, shown: &dyn Fn(&Path) -> PathBuf, report: &mut Report) {
+fn check_connections(
+    ms: &MsDir,
+    design: &str,
+    services: &BTreeMap<String, Origin>,
+    unknown_help: &dyn Fn(&str) -> Option<String>,
+    shown: &dyn Fn(&Path) -> PathBuf,
+    report: &mut Report,
+) {
     let cfg = match CfgFile::find(ms, "CONNECT.CFG") {
         Ok(cfg) => cfg,
         Err(e) => {
@@ -315,7 +376,10 @@ fn check_connections(ms: &MsDir, design: &str, services: &BTreeMap<String, Origi
             None
         }
     };
+    let rp = ["HOSTGW.CFG", "ROBOTGW.CFG"].iter().any(|f| ms.existing_in_program(&format!("/MS/OPEN-R/MW/CONF/{f}")).is_some());
     let mut connected: HashSet<String> = HashSet::new();
+    // Per gateway service, the lines of the connections it is in.
+    let mut gateway_uses: HashMap<String, Vec<usize>> = HashMap::new();
     if let Some(cfg) = &cfg {
         let file = shown(&cfg.path);
         let mut seen: Vec<(String, String, usize)> = Vec::new();
@@ -359,19 +423,48 @@ fn check_connections(ms: &MsDir, design: &str, services: &BTreeMap<String, Origi
             }
             for name in [subject, observer] {
                 if !services.contains_key(name.as_str()) && !SYSTEM_SERVICES.contains(&name.as_str()) {
-                    report.push(at(Diagnostic::error("E0007", format!("unknown service `{name}`: no object registers it")).help(suggest(name, services))));
+                    let help = unknown_help(name).unwrap_or_else(|| suggest(name, services));
+                    let what = if help.contains("gateway") { "neither an object nor the gateway registers it" } else { "no object registers it" };
+                    report.push(at(Diagnostic::error("E0007", format!("unknown service `{name}`: {what}")).help(help)));
                 }
             }
             let (a, b) = if ks == Some('O') && ko == Some('S') { (observer, subject) } else { (subject, observer) };
             if let Some((_, _, first)) = seen.iter().find(|(s, o, _)| s == a && o == b) {
-                report.push(at(Diagnostic::error("E0010", format!("duplicate connection `{a} {b}` (first on line {first})")).help("remove this line")));
+                let message = format!("duplicate connection `{a} {b}` (first on line {first})");
+                // Sony's RP -BAD samples have such lines; the runtime leaves them out there.
+                let d = if rp {
+                    Diagnostic::warning("W0004", message).help("left out; remove this line")
+                } else {
+                    Diagnostic::error("E0010", message).help("remove this line")
+                };
+                report.push(at(d));
             } else {
                 seen.push((a.clone(), b.clone(), line.number));
+                for name in [a, b].into_iter().filter(|n| services.get(n.as_str()).is_some_and(|o| o.gateway)) {
+                    gateway_uses.entry(name.clone()).or_default().push(line.number);
+                }
             }
         }
     }
+    for (name, uses) in gateway_uses.iter().filter(|(_, uses)| uses.len() > 1) {
+        let Some(cfg) = &cfg else { break };
+        let lines: Vec<String> = uses.iter().map(usize::to_string).collect();
+        report.push(
+            Diagnostic::warning("W0003", format!("gateway service `{name}` is in {} connections (lines {})", uses.len(), lines.join(", ")))
+                .at(shown(&cfg.path), Some(uses[0]))
+                .help("one gateway channel carries one subject-observer connection: give each connection a service and port of its own (Sony's ObjectComm-multi RP2, not RP2-BAD)"),
+        );
+    }
     for (name, origin) in services {
         if data_name(name) == DO_NOT_CONNECT || connected.contains(name) {
+            continue;
+        }
+        if origin.gateway {
+            report.push(
+                Diagnostic::warning("W0002", format!("gateway service `{name}` is never connected"))
+                    .at(&origin.file, origin.line)
+                    .help("connect it in MS/OPEN-R/MW/CONF/CONNECT.CFG, or remove the line"),
+            );
             continue;
         }
         let what = if name.ends_with(".S") { "subject" } else { "observer" };
