@@ -11,6 +11,7 @@ use anyhow::{bail, Context, Result};
 
 mod camera;
 mod network;
+mod rp;
 pub mod stats;
 
 use stats::{Table, Trial};
@@ -173,6 +174,9 @@ pub enum Group {
     Robots,
     /// TCP echo and FTP through a robot, beside host servers
     Network,
+    /// Remote Processing: notify→ready round trip with one object on the host (gateways,
+    /// loopback TCP), beside both on the robot and a raw TCP ping-pong
+    Rp,
 }
 
 /// Runs every benchmark `runs` times; `repo` holds `bench/programs`, `root` is an
@@ -222,6 +226,9 @@ fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, wante
     }
     if wanted(Group::Network) {
         network::network(exe, repo, root, work, &mut report.table)?;
+    }
+    if wanted(Group::Rp) {
+        rp::rp(exe, root, &b.pingpong, work, &mut report.table)?;
     }
     Ok(())
 }

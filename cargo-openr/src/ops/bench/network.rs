@@ -9,8 +9,8 @@ use anyhow::{bail, Result};
 
 use super::build;
 use super::stats::Table;
-/// A runtime on `ms` with `--port-offset`, killed (SIGTERM) when dropped.
-struct Robot(std::process::Child);
+/// A runtime on `ms` (with `--port-offset` when started here), killed (SIGTERM) when dropped.
+pub(super) struct Robot(pub(super) std::process::Child);
 
 impl Robot {
     fn start(exe: &Path, root: &Path, ms: &Path, offset: u16) -> Result<Robot> {
