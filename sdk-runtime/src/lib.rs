@@ -44,6 +44,7 @@ pub mod sched;
 mod scratch;
 pub mod shm;
 mod signals;
+mod spin;
 pub mod timers;
 pub mod vr;
 

@@ -81,11 +81,41 @@ pub fn reply_current(bytes: &[u8]) -> bool {
     }
 }
 
+/// What a brief spin (`spin`) found on a channel.
+pub(crate) enum Spun<T> {
+    Got(T),
+    /// The sender is gone.
+    Gone,
+    /// Nothing yet: the caller parks.
+    Nothing,
+}
+
+pub(crate) fn spin_recv<T>(rx: &Receiver<T>) -> Spun<T> {
+    use std::sync::mpsc::TryRecvError;
+    match crate::spin::poll(|| match rx.try_recv() {
+        Ok(v) => Some(Spun::Got(v)),
+        Err(TryRecvError::Disconnected) => Some(Spun::Gone),
+        Err(TryRecvError::Empty) => None,
+    }) {
+        Some(spun) => spun,
+        None => Spun::Nothing,
+    }
+}
+
+/// `rx.recv()`, spinning first.
+fn recv<T>(rx: &Receiver<T>) -> Option<T> {
+    match spin_recv(rx) {
+        Spun::Got(v) => Some(v),
+        Spun::Gone => None,
+        Spun::Nothing => rx.recv().ok(),
+    }
+}
+
 /// The object's message loop; returns when the runtime drops its sender.
 pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(String)) {
     let module = slot.module.get().expect("loaded before the loop starts");
     let sched = &crate::runtime::Runtime::get().expect("objects run in a runtime").sched;
-    while let Ok(mut env) = rx.recv() {
+    while let Some(mut env) = recv(&rx) {
         sched.begin(slot.index, env.selector);
         let Some(entry) = module.entry(env.selector) else {
             warn(format!("object `{}` has no entry for selector {}: message dropped", slot.name(), env.selector));

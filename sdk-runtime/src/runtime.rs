@@ -9,7 +9,7 @@ use std::time::Duration;
 
 use crate::clock::Clock;
 use crate::ms::MsDir;
-use crate::object::{Envelope, ObjectSlot};
+use crate::object::{Envelope, ObjectSlot, Spun};
 use crate::power::Power;
 use crate::shm::ShmTable;
 
@@ -205,12 +205,14 @@ impl Runtime {
         enqueue(&self.sched, &slot, Envelope { selector, data, reply: Some(tx), caller })?;
         queued();
         let held = caller.is_some_and(|i| self.sched.calling(i));
-        let answer = match timeout {
-            Some(t) => rx.recv_timeout(t).map_err(|e| match e {
+        let answer = match (crate::object::spin_recv(&rx), timeout) {
+            (Spun::Got(v), _) => Ok(v),
+            (Spun::Gone, _) => Err(CallError::UnknownDestination),
+            (Spun::Nothing, Some(t)) => rx.recv_timeout(t).map_err(|e| match e {
                 RecvTimeoutError::Timeout => CallError::Timeout,
                 RecvTimeoutError::Disconnected => CallError::UnknownDestination,
             }),
-            None => rx.recv().map_err(|_| CallError::UnknownDestination),
+            (Spun::Nothing, None) => rx.recv().map_err(|_| CallError::UnknownDestination),
         };
         if let (true, Some(i)) = (held, caller) {
             self.sched.call_returned(i);

@@ -16,9 +16,9 @@
 //!   loop, a read of the console) loses the turn and runs on outside the turns until
 //!   that message returns: the others, and virtual time, go on without it.
 //!
-//! At other speeds nothing is serialised: the queue only counts what is pending.
+//! At other speeds nothing is serialised: messages get no ticket.
 use std::collections::{BTreeMap, BTreeSet, VecDeque};
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Condvar, Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
@@ -69,6 +69,9 @@ struct State {
     stuck: Vec<(usize, u32)>,
     /// What each object is running now (at every speed): index → selector.
     busy: BTreeMap<usize, u32>,
+    /// Threads parked on the condition variable: a change wakes them only when there
+    /// are any (a futex wake is a system call even with nobody waiting).
+    parked: usize,
 }
 
 impl State {
@@ -96,13 +99,22 @@ impl State {
 pub struct Sched {
     state: Mutex<State>,
     cv: Condvar,
+    /// Bumped (under the lock) by every change a waiter may be waiting for: spinning
+    /// waiters watch it instead of parking.
+    changes: AtomicU64,
     serial: AtomicBool,
     watchdog: Mutex<Duration>,
 }
 
 impl Default for Sched {
     fn default() -> Sched {
-        Sched { state: Mutex::default(), cv: Condvar::new(), serial: AtomicBool::new(false), watchdog: Mutex::new(Duration::from_secs(5)) }
+        Sched {
+            state: Mutex::default(),
+            cv: Condvar::new(),
+            changes: AtomicU64::new(0),
+            serial: AtomicBool::new(false),
+            watchdog: Mutex::new(Duration::from_secs(5)),
+        }
     }
 }
 
@@ -111,10 +123,37 @@ impl Sched {
         self.state.lock().unwrap_or_else(|p| p.into_inner())
     }
 
-    fn wait<'a>(&self, s: MutexGuard<'a, State>) -> MutexGuard<'a, State> {
-        let mut s = self.cv.wait_timeout(s, RECHECK).unwrap_or_else(|p| p.into_inner()).0;
+    /// Waits for a change: spins a little first (`spin`), then parks.
+    fn wait<'a>(&'a self, s: MutexGuard<'a, State>) -> MutexGuard<'a, State> {
+        let seen = self.changes.load(Ordering::Acquire);
+        drop(s);
+        let changed = crate::spin::poll(|| (self.changes.load(Ordering::Acquire) != seen).then_some(())).is_some();
+        let mut s = self.lock();
+        if !changed && self.changes.load(Ordering::Acquire) == seen {
+            s.parked += 1;
+            s = self.cv.wait_timeout(s, RECHECK).unwrap_or_else(|p| p.into_inner()).0;
+            s.parked -= 1;
+        }
         self.check_watchdog(&mut s);
         s
+    }
+
+    /// After a change to the state: wakes the waiters.
+    fn changed(&self, s: MutexGuard<'_, State>) {
+        self.changes.fetch_add(1, Ordering::AcqRel);
+        let parked = s.parked > 0;
+        drop(s);
+        if parked {
+            self.cv.notify_all();
+        }
+    }
+
+    /// `changed` from inside a wait, keeping the lock.
+    fn changed_locked(&self, s: &State) {
+        self.changes.fetch_add(1, Ordering::AcqRel);
+        if s.parked > 0 {
+            self.cv.notify_all();
+        }
     }
 
     /// A holder past the watchdog loses the turn; so does one waiting for console input
@@ -125,13 +164,13 @@ impl Sched {
             if t.elapsed() >= CONSOLE_PROBE && crate::console::input::blocked_reading(i) {
                 s.detached.insert(i);
                 s.give_back();
-                self.cv.notify_all();
+                self.changed_locked(s);
             } else if t.elapsed() >= limit {
                 let sel = s.running.map_or(u32::MAX, |r| r.1);
                 s.detached.insert(i);
                 s.stuck.push((i, sel));
                 s.give_back();
-                self.cv.notify_all();
+                self.changed_locked(s);
             }
         }
     }
@@ -143,7 +182,7 @@ impl Sched {
     /// Serialise (speed `max`) or not.
     pub fn set_serial(&self, on: bool) {
         self.serial.store(on, Ordering::Release);
-        self.cv.notify_all();
+        self.changed(self.lock());
     }
 
     pub fn set_watchdog(&self, d: Duration) {
@@ -162,14 +201,20 @@ impl Sched {
 
     /// Queues a ticket for object `index` if `send` (which queues the message) succeeds;
     /// both under one lock, so tickets and messages are in the same order.
+    ///
+    /// Not serialised, a message gets no ticket and is sent outside the lock: waking
+    /// its receiver (a system call) would otherwise keep every other sender and
+    /// receiver waiting for the lock.
     pub fn push(&self, index: usize, send: impl FnOnce() -> bool) -> bool {
+        if !self.serial() {
+            return send();
+        }
         let mut s = self.lock();
         if !send() {
             return false;
         }
         s.queue.push_back(index);
-        drop(s);
-        self.cv.notify_all();
+        self.changed(s);
         true
     }
 
@@ -178,8 +223,11 @@ impl Sched {
         let mut s = self.lock();
         s.busy.insert(index, selector);
         loop {
-            if !self.serial() || s.detached.contains(&index) {
-                if let Some(pos) = s.queue.iter().position(|&i| i == index) {
+            let ticket = s.queue.iter().position(|&i| i == index);
+            // A message sent while nothing was serialised has no ticket: it runs as it
+            // would have then.
+            if !self.serial() || s.detached.contains(&index) || ticket.is_none() {
+                if let Some(pos) = ticket {
                     s.queue.remove(pos);
                 }
                 return;
@@ -211,8 +259,7 @@ impl Sched {
         }
         s.detached.remove(&index);
         s.busy.remove(&index);
-        drop(s);
-        self.cv.notify_all();
+        self.changed(s);
     }
 
     /// The object called exit(): it never runs again.
@@ -222,8 +269,7 @@ impl Sched {
             s.give_back();
         }
         s.retired.insert(index);
-        drop(s);
-        self.cv.notify_all();
+        self.changed(s);
     }
 
     /// Object `index` (after queuing its call) waits for an answer: gives the turn back.
@@ -235,8 +281,7 @@ impl Sched {
         }
         s.give_back();
         s.calling.insert(index);
-        drop(s);
-        self.cv.notify_all();
+        self.changed(s);
         true
     }
 
@@ -266,8 +311,7 @@ impl Sched {
         }
         s.give_back();
         s.sleepers.insert((until, index));
-        drop(s);
-        self.cv.notify_all();
+        self.changed(s);
         true
     }
 
@@ -276,7 +320,7 @@ impl Sched {
         self.resume(self.lock(), index);
     }
 
-    fn resume(&self, mut s: MutexGuard<'_, State>, index: usize) {
+    fn resume<'a>(&'a self, mut s: MutexGuard<'a, State>, index: usize) {
         loop {
             if !self.serial() {
                 s.resume.retain(|&i| i != index);
@@ -347,8 +391,9 @@ impl Sched {
     /// Frame thread, holding the turn when virtual time has ended: keeps it for the
     /// shutdown sequence (`take_over`), so Stop comes at the same message every run.
     pub fn hand_over(&self) {
-        self.lock().handed_over = true;
-        self.cv.notify_all();
+        let mut s = self.lock();
+        s.handed_over = true;
+        self.changed(s);
     }
 
     /// Shutdown at `--speed max`: waits (at most `patience`) for the frame thread to hand
@@ -369,8 +414,7 @@ impl Sched {
         if s.holder == Some(Holder::External) {
             s.give_back();
         }
-        drop(s);
-        self.cv.notify_all();
+        self.changed(s);
     }
 }
 
