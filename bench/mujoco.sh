@@ -25,15 +25,19 @@ cat "$work/camwatch/MS/OPEN-R/MW/CONF/CONNECT.CFG" >>"$ms/OPEN-R/MW/CONF/CONNECT
 py=$("$exe" doctor --format json 2>/dev/null | python3 -c 'import json,sys; f=[f for f in json.load(sys.stdin)["findings"] if f["name"]=="MuJoCo + GL"][0]; print(f["detail"].split(" via ")[-1])')
 
 echo "== whole runs: ${SECONDS_RUN} s of robot time at --speed max"
+# Each size plain, then with the peer's --pipeline (the physics steps while the runtime
+# works; a command shows in the readings one frame later), one right after the other.
 for n in 1 4 8; do
-  t0=$(date +%s.%N)
-  OPENRSDK_ROOT=$root "$exe" run "$ms" --sim mujoco --robots "$n" --for "${SECONDS_RUN}s" --speed max \
-    >"$work/out.txt" 2>"$work/err.txt" || { cat "$work/err.txt"; exit 1; }
-  t1=$(date +%s.%N)
-  rtf=$(grep -o 'whole run [0-9.]* s wall -> [0-9.]* x' "$work/err.txt" | awk '{ print $7 }')
-  awk -v a="$t0" -v b="$t1" -v s="$SECONDS_RUN" -v n="$n" -v r="$rtf" \
-    'BEGIN { printf "%d robot(s): %.1f x real time attached (the simulation); %.2f s wall with process start -> %.1f x\n", n, r, b - a, s / (b - a) }'
-  grep "mujoco peer:.*frames" "$work/err.txt" | sed 's/^/    /'
+  for pipeline in "" --sim-arg=--pipeline; do
+    t0=$(date +%s.%N)
+    OPENRSDK_ROOT=$root "$exe" run "$ms" --sim mujoco --robots "$n" --for "${SECONDS_RUN}s" --speed max $pipeline \
+      >"$work/out.txt" 2>"$work/err.txt" || { cat "$work/err.txt"; exit 1; }
+    t1=$(date +%s.%N)
+    rtf=$(grep -o 'whole run [0-9.]* s wall -> [0-9.]* x' "$work/err.txt" | awk '{ print $7 }')
+    awk -v a="$t0" -v b="$t1" -v s="$SECONDS_RUN" -v n="$n" -v r="$rtf" -v p="${pipeline:+ (--pipeline)}" \
+      'BEGIN { printf "%d robot(s)%s: %.1f x real time attached (the simulation); %.2f s wall with process start -> %.1f x\n", n, p, r, b - a, s / (b - a) }'
+    grep "mujoco peer:.*frames" "$work/err.txt" | sed 's/^/    /'
+  done
 done
 
 echo "== the peer alone (no runtimes): robots standing, every head camera at 30 fps"

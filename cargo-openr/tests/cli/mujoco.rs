@@ -215,6 +215,27 @@ fn the_same_seed_gives_byte_identical_traces() {
     assert!(a != c, "seeds 7 and 8 gave the same trace");
 }
 
+/// `--pipeline`: the peer answers each frame with the state it begins with and steps
+/// while the runtime works. Still reproducible, still tracking, and not the same run.
+#[test]
+fn a_pipelined_simulation_is_reproducible_and_still_tracks_the_commands() {
+    let b = build("movelegs");
+    let dir = tempfile::tempdir().unwrap();
+    let run = |tag: &str, extra: &[&str]| {
+        let trace = dir.path().join(format!("{tag}.jsonl"));
+        let mut args = vec!["--for", "6s", "--trace", trace.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        sim(&b.ms(), &args);
+        fs::read(&trace).unwrap()
+    };
+    let (a, a2, plain) = (run("a", &["--sim-arg=--pipeline"]), run("b", &["--sim-arg=--pipeline"]), run("c", &[]));
+    assert!(a == a2, "two pipelined runs differ");
+    assert!(a != plain, "--pipeline changed nothing");
+    let t = read_trace(&dir.path().join("a.jsonl"));
+    let (max, rms) = tracking_error(&t, LF_J1, 160, 640);
+    assert!(max < 10.0 && rms < 5.0, "pipelined LF J1: max {max:.1}°, RMS {rms:.1}° off its targets");
+}
+
 #[test]
 fn several_robots_run_their_own_programs_and_collide() {
     let legs = build("movelegs");
