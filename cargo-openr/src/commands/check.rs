@@ -27,7 +27,9 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         report.diagnostics.extend(check::check(&opts)?.diagnostics);
         sticks.push(opts.ms.strip_prefix(&args.dir).unwrap_or(&opts.ms).display().to_string());
     }
-    finish(&report, args.message_format, &format!("{} ({})", args.dir.display(), sticks.join(", ")), shell)
+    // A Remote Processing project's sides are named: which sticks were checked.
+    let what = if sticks == ["MS"] { args.dir.display().to_string() } else { format!("{} ({})", args.dir.display(), sticks.join(", ")) };
+    finish(&report, args.message_format, &what, shell)
 }
 
 /// Prints the findings and a summary; an error when any finding is an error.

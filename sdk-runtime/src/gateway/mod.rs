@@ -36,7 +36,7 @@ pub fn builtin_name(image: &[u8]) -> Option<&str> {
     std::str::from_utf8(rest).ok().map(str::trim)
 }
 
-pub use setup::module;
+pub use setup::{channels, module, Channel, Peer};
 
 /// What the gateway of this process was set up with (one gateway per process).
 struct Setup {

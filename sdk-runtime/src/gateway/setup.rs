@@ -74,8 +74,34 @@ pub fn module(name: &str, bin: &Path) -> Result<Module> {
 
 type Prepared = (Vec<Arc<Link>>, Vec<Target>);
 
-/// Checks the lines as a whole and makes each one's link and target.
-fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::result::Result<Prepared, String> {
+/// Where a line's channel goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Peer {
+    /// Host: connect to the robot at this address (the line's, or `!ROBOT_PROXY`'s).
+    Connect(Ipv4Addr),
+    /// Robot: listen; `addr_given` if the line has an address anyway (it is ignored).
+    Listen { addr_given: bool },
+}
+
+/// One line of a gateway file as the channel it makes.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Channel<'a> {
+    pub line: usize,
+    /// The service name; the proxy's is `TCPGateway.Proxy.AperiosMessage.P`.
+    pub name: &'a str,
+    /// `b'S'`, `b'O'` or `b'P'`.
+    pub suffix: u8,
+    pub port: u16,
+    pub peer: Peer,
+    pub options: &'a [String],
+}
+
+/// The lines of a gateway file (HOSTGW.CFG when `host`) as channels, checked as a whole
+/// without opening anything, so that `cargo openr check` refuses what a run would: one
+/// proxy line, each service once, one channel per port (and robot, on the host), an
+/// address for every host line, no more lines than the gateway has service slots. The
+/// first problem as (line, message).
+pub fn channels(lines: &[GwLine], host: bool) -> std::result::Result<Vec<Channel<'_>>, (usize, String)> {
     let proxy_addr = lines.iter().find_map(|l| match l {
         GwLine::Proxy { addr, .. } => *addr,
         _ => None,
@@ -83,13 +109,13 @@ fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::re
     let mut seen_ports: HashMap<(Option<Ipv4Addr>, u16), usize> = HashMap::new();
     let mut seen_names: HashMap<&str, usize> = HashMap::new();
     let (mut subjects, mut observers, mut proxies) = (0, 0, 0);
-    let (mut links, mut targets) = (Vec::new(), Vec::new());
+    let mut out = Vec::new();
     for l in lines {
         let (line, name, port, addr, options) = match l {
             GwLine::Proxy { line, port, addr } => (*line, "TCPGateway.Proxy.AperiosMessage.P", *port, *addr, &[][..]),
             GwLine::Service { line, name, port, addr, options } => (*line, name.as_str(), *port, *addr, &options[..]),
         };
-        let place = format!("{file}:{line}");
+        let err = |m: String| (line, m);
         let suffix = *name.as_bytes().last().unwrap_or(&b'P');
         match suffix {
             b'S' => subjects += 1,
@@ -97,37 +123,55 @@ fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::re
             _ => proxies += 1,
         }
         if proxies > 1 && suffix == b'P' {
-            return Err(format!("{place}: a second proxy line (one per gateway)"));
+            return Err(err("a second proxy line (one per gateway)".into()));
         }
         if subjects > openr::MAX_SUBJECTS || observers > openr::MAX_OBSERVERS {
-            return Err(format!("{place}: more than {} subject or observer lines (the gateway has as many service slots)", openr::MAX_SUBJECTS));
+            return Err(err(format!("more than {} subject or observer lines (the gateway has as many service slots)", openr::MAX_SUBJECTS)));
         }
         if let Some(prev) = seen_names.insert(name, line).filter(|_| suffix != b'P') {
-            return Err(format!("{place}: service {name} is already line {prev}: each line is its own service"));
+            return Err(err(format!("service {name} is already line {prev}: each line is its own service")));
         }
         let key = (if host { addr.or(proxy_addr) } else { None }, port);
         if let Some(prev) = seen_ports.insert(key, line) {
-            return Err(format!("{place}: port {port} is already line {prev}: one channel per port{}", if host { " and robot" } else { "" }));
+            return Err(err(format!("port {port} is already line {prev}: one channel per port{}", if host { " and robot" } else { "" })));
         }
-        for o in options {
+        let peer = if host {
+            Peer::Connect(addr.or(proxy_addr).ok_or_else(|| err("no robot address, and no `!ROBOT_PROXY` line to take it from".into()))?)
+        } else {
+            Peer::Listen { addr_given: addr.is_some() }
+        };
+        out.push(Channel { line, name, suffix, port, peer, options });
+    }
+    Ok(out)
+}
+
+/// Checks the lines as a whole and makes each one's link and target.
+fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::result::Result<Prepared, String> {
+    let channels = channels(lines, host).map_err(|(line, m)| format!("{file}:{line}: {m}"))?;
+    let (mut links, mut targets) = (Vec::new(), Vec::new());
+    for c in channels {
+        let (port, place) = (c.port, format!("{file}:{}", c.line));
+        for o in c.options {
             let key = o.split('=').next().unwrap_or("");
             if !matches!(key, "dskip" | "dmin" | "dmax") {
                 super::warn(&format!("{place}: unknown option `{o}` ignored (known: dskip, dmin, dmax)"));
             }
         }
-        let hello = Hello { suffix, port, name: name.to_string(), place: place.clone() };
-        let target = if host {
-            let ip = addr.or(proxy_addr).ok_or_else(|| format!("{place}: no robot address, and no `!ROBOT_PROXY` line to take it from"))?;
-            let (a, p) = net.remote(u32::from(ip), port, "gateway channel");
-            Target::Connect(SocketAddrV4::new(Ipv4Addr::from(a), p))
-        } else {
-            if addr.is_some() {
-                super::warn(&format!("{place}: the robot listens, the address on this line is ignored"));
+        let hello = Hello { suffix: c.suffix, port, name: c.name.to_string(), place: place.clone() };
+        let target = match c.peer {
+            Peer::Connect(ip) => {
+                let (a, p) = net.remote(u32::from(ip), port, "gateway channel");
+                Target::Connect(SocketAddrV4::new(Ipv4Addr::from(a), p))
             }
-            let p = net.local_port(port, "gateway channel").ok_or_else(|| format!("{place}: port {port} moved by --port-offset does not fit"))?;
-            let at = SocketAddrV4::new(Ipv4Addr::from(net.bind), p);
-            let l = TcpListener::bind(at).map_err(|e| format!("{place}: cannot listen on {at} for channel {port}: {e}"))?;
-            Target::Listen(l)
+            Peer::Listen { addr_given } => {
+                if addr_given {
+                    super::warn(&format!("{place}: the robot listens, the address on this line is ignored"));
+                }
+                let p = net.local_port(port, "gateway channel").ok_or_else(|| format!("{place}: port {port} moved by --port-offset does not fit"))?;
+                let at = SocketAddrV4::new(Ipv4Addr::from(net.bind), p);
+                let l = TcpListener::bind(at).map_err(|e| format!("{place}: cannot listen on {at} for channel {port}: {e}"))?;
+                Target::Listen(l)
+            }
         };
         links.push(Arc::new(Link::new(links.len(), place, hello)));
         targets.push(target);

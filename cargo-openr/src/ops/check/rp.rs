@@ -69,10 +69,11 @@ fn read(ms: &MsDir, name: &str, shown: &dyn Fn(&Path) -> PathBuf, report: &mut R
         }
     };
     let file = shown(&cfg.path);
+    let host = name == "HOSTGW.CFG";
     let lines = match gwcfg::parse_lines(&cfg.text) {
         Ok(lines) => lines,
         Err((line, message)) => {
-            let form = if name == "HOSTGW.CFG" {
+            let form = if host {
                 "`!ROBOT_PROXY <port> <robot IPv4>` or `<Obj>.<Service>.<DataType>.S|O <port> [<robot IPv4>] [key=value…]`"
             } else {
                 "`TCPGateway.Proxy.AperiosMessage.P <port>` or `TCPGateway.<Service>.<DataType>.S|O <port>`"
@@ -81,18 +82,21 @@ fn read(ms: &MsDir, name: &str, shown: &dyn Fn(&Path) -> PathBuf, report: &mut R
             return Some(Vec::new());
         }
     };
+    // What the run would refuse of the lines as a whole (one channel per port, …); the
+    // services are the lines all the same, so connections to them are not unknown too.
+    if let Err((line, message)) = sdk_runtime::gateway::channels(&lines, host) {
+        report.push(
+            Diagnostic::error("E0011", format!("the gateway would not start: {message}"))
+                .at(&file, Some(line))
+                .help("each line is one service and one channel: its own name and port (on the host, its robot's address or the `!ROBOT_PROXY` line's); one proxy line at most"),
+        );
+    }
     let mut out: Vec<GwService> = Vec::new();
     for l in lines {
-        let GwLine::Service { line, name: service, .. } = l else { continue };
-        if let Some(first) = out.iter().find(|s| s.name == service) {
-            report.push(
-                Diagnostic::error("E0011", format!("gateway service `{service}` is already line {}", first.line))
-                    .at(&file, Some(line))
-                    .help("each line is a service of its own: give it another name"),
-            );
-            continue;
+        match l {
+            GwLine::Service { line, name, .. } if !out.iter().any(|s| s.name == name) => out.push(GwService { name, file: file.clone(), line }),
+            _ => {}
         }
-        out.push(GwService { name: service, file: file.clone(), line });
     }
     Some(out)
 }
