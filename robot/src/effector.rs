@@ -250,7 +250,23 @@ impl Effector {
     /// Executes one frame: `now` = frames since boot (monotonic), `frame` = frame number.
     pub fn step(&mut self, now: u64, frame: u32, sync: &mut SyncKeys) -> EffectorFrame {
         let mut out = EffectorFrame::default();
-        // 1. wait countdown; sync arrival
+        self.count_down(now, sync);
+        out.sync_released = sync.resolve(now);
+        self.start_heads(now, frame, sync, &mut out);
+        let cmds = self.frame_commands(now);
+        let mut applied = self.adapt(&cmds);
+        self.combined_limits(&mut applied, &mut out);
+        for a in &applied {
+            self.targets.insert(a.primitive, a.command);
+        }
+        out.applied = applied;
+        out.optional = self.current_optional().map(|(o, b)| (o, b.to_vec()));
+        self.complete(now, &mut out);
+        out
+    }
+
+    /// 1. wait countdown; sync arrival.
+    fn count_down(&mut self, now: u64, sync: &mut SyncKeys) {
         for q in self.queues.values_mut() {
             let Some(head) = q.front_mut() else { continue };
             if let State::Pending { wait_left } = head.state {
@@ -264,8 +280,10 @@ impl Effector {
                 }
             }
         }
-        // 2. sync release; 3. start
-        out.sync_released = sync.resolve(now);
+    }
+
+    /// 3. start: released holders and vectors whose wait ended this frame.
+    fn start_heads(&mut self, now: u64, frame: u32, sync: &mut SyncKeys, out: &mut EffectorFrame) {
         for (&conn, q) in self.queues.iter_mut() {
             let Some(head) = q.front_mut() else { continue };
             match head.state {
@@ -282,11 +300,15 @@ impl Effector {
             }
             out.started.push(Started { connection: conn, token: head.token, frame, duration: head.duration, slots: head.slots.clone() });
         }
-        // 4. this frame's commands, later-arriving vectors overriding earlier ones
+    }
+
+    /// 4. this frame's commands, later-arriving vectors overriding earlier ones, then
+    /// the immediate commands.
+    fn frame_commands(&mut self, now: u64) -> BTreeMap<PrimitiveId, (FrameCommand, Option<(ConnectionId, Token)>)> {
         let mut playing: Vec<(u64, ConnectionId, &Queued)> =
             self.queues.iter().filter_map(|(&c, q)| q.front().map(|v| (v.seq, c, v))).filter(|(_, _, v)| matches!(v.state, State::Playing { .. })).collect();
         playing.sort_by_key(|x| x.0);
-        let mut cmds: BTreeMap<PrimitiveId, (FrameCommand, Option<(ConnectionId, Token)>)> = BTreeMap::new();
+        let mut cmds = BTreeMap::new();
         for (_, conn, v) in &playing {
             let State::Playing { start } = v.state else { continue };
             let k = u32::try_from(now - start).unwrap_or(u32::MAX);
@@ -301,9 +323,13 @@ impl Effector {
                 cmds.insert(id, (c, None));
             }
         }
-        // 5. adapt, clamp, hold
+        cmds
+    }
+
+    /// 5. adapt to the primitive (range clamp, a two-state LED on a three-state one).
+    fn adapt(&self, cmds: &BTreeMap<PrimitiveId, (FrameCommand, Option<(ConnectionId, Token)>)>) -> Vec<Applied> {
         let mut applied: Vec<Applied> = Vec::with_capacity(cmds.len());
-        for (&id, &(requested, source)) in &cmds {
+        for (&id, &(requested, source)) in cmds {
             let Some(p) = self.model.primitive(id) else { continue };
             let command = match (requested, p.kind, p.joint) {
                 (FrameCommand::Joint(v), _, Some(j)) => FrameCommand::Joint(j.clamp(v)),
@@ -312,7 +338,12 @@ impl Effector {
             };
             applied.push(Applied { primitive: id, command, requested, source });
         }
-        // combined limits against this frame's (or the held) target of the other joint
+        applied
+    }
+
+    /// Combined limits against this frame's (or the held) target of the other joint;
+    /// a clamp is reported once until the request changes.
+    fn combined_limits(&mut self, applied: &mut [Applied], out: &mut EffectorFrame) {
         let current: HashMap<PrimitiveId, i32> = applied
             .iter()
             .filter_map(|a| match a.command {
@@ -324,19 +355,10 @@ impl Effector {
             let (FrameCommand::Joint(requested), FrameCommand::Joint(v)) = (a.requested, a.command) else { continue };
             let mut rule = if v != requested { Some(ClampRule::Range) } else { None };
             let mut value = v;
-            if let Some(p) = self.model.primitive(a.primitive) {
-                let dep = self.model.combined_dependency(p.part).and_then(|d| self.model.by_part(d)).map(|d| d.id);
-                let other = dep.and_then(|d| {
-                    current.get(&d).copied().or(match self.targets.get(&d) {
-                        Some(FrameCommand::Joint(t)) => Some(*t),
-                        _ => None,
-                    })
-                });
-                if let Some(min) = other.and_then(|o| self.model.combined_min(p.part, o)) {
-                    if value < min {
-                        value = min;
-                        rule = Some(ClampRule::Combined);
-                    }
+            if let Some(min) = self.combined_min_for(a.primitive, &current) {
+                if value < min {
+                    value = min;
+                    rule = Some(ClampRule::Combined);
                 }
             }
             a.command = FrameCommand::Joint(value);
@@ -352,12 +374,22 @@ impl Effector {
                 }
             }
         }
-        for a in &applied {
-            self.targets.insert(a.primitive, a.command);
-        }
-        out.applied = applied;
-        out.optional = self.current_optional().map(|(o, b)| (o, b.to_vec()));
-        // 6. completion
+    }
+
+    /// The combined lower limit of `id` given the other joint's target this frame (or
+    /// the one it holds).
+    fn combined_min_for(&self, id: PrimitiveId, current: &HashMap<PrimitiveId, i32>) -> Option<i32> {
+        let p = self.model.primitive(id)?;
+        let dep = self.model.combined_dependency(p.part).and_then(|d| self.model.by_part(d)).map(|d| d.id)?;
+        let other = current.get(&dep).copied().or(match self.targets.get(&dep) {
+            Some(FrameCommand::Joint(t)) => Some(*t),
+            _ => None,
+        })?;
+        self.model.combined_min(p.part, other)
+    }
+
+    /// 6. completion: vectors whose last frame was this one leave their queue.
+    fn complete(&mut self, now: u64, out: &mut EffectorFrame) {
         for (&conn, q) in self.queues.iter_mut() {
             let done = match q.front() {
                 Some(Queued { state: State::Playing { start }, duration, .. }) => now - start + 1 >= *duration as u64,
@@ -370,7 +402,6 @@ impl Effector {
             }
         }
         self.queues.retain(|_, q| !q.is_empty());
-        out
     }
 }
 

@@ -193,19 +193,7 @@ pub fn exec(args: Args, given: &clap::ArgMatches, shell: &mut Shell) -> anyhow::
         return simulate(&args, given, &world, &root, shell);
     }
     let ms_base = base_tree(&root, &cfg.design.value, &cfg.base.value)?;
-    let mut observers = sdk_runtime::observe::Observers::default();
-    if let Some(addr) = args.view {
-        let view = openr_view::View::bind(addr).map_err(anyhow::Error::msg)?;
-        // As soon as it listens: a browser may connect while the objects load.
-        eprintln!("Viewing http://{}/", view.addr());
-        observers.0.push(std::sync::Arc::new(view));
-    }
-    let mut trace = args.trace.clone();
-    if let Some(dir) = &args.record {
-        let recorder = openr_view::record::Recorder::create(dir).map_err(anyhow::Error::msg)?;
-        trace = Some(recorder.trace_path());
-        observers.0.push(std::sync::Arc::new(recorder));
-    }
+    let (observers, trace) = observers(&args)?;
     let opts = RunOptions {
         ms_base,
         system_objects: install::system_objects(&root),
@@ -260,6 +248,25 @@ pub fn exec(args: Args, given: &clap::ArgMatches, shell: &mut Shell) -> anyhow::
         anyhow::bail!("the run failed:\n  {}", outcome.failures.join("\n  "));
     }
     Ok(())
+}
+
+/// The run's observers (`--view`, `--record`) and the trace file (`--trace`, or the
+/// recording's).
+fn observers(args: &Args) -> anyhow::Result<(sdk_runtime::observe::Observers, Option<PathBuf>)> {
+    let mut observers = sdk_runtime::observe::Observers::default();
+    if let Some(addr) = args.view {
+        let view = openr_view::View::bind(addr).map_err(anyhow::Error::msg)?;
+        // As soon as it listens: a browser may connect while the objects load.
+        eprintln!("Viewing http://{}/", view.addr());
+        observers.0.push(std::sync::Arc::new(view));
+    }
+    let mut trace = args.trace.clone();
+    if let Some(dir) = &args.record {
+        let recorder = openr_view::record::Recorder::create(dir).map_err(anyhow::Error::msg)?;
+        trace = Some(recorder.trace_path());
+        observers.0.push(std::sync::Arc::new(recorder));
+    }
+    Ok((observers, trace))
 }
 
 /// The directory of the base tree `base` in the SDK root (`None` for `none`).
