@@ -18,7 +18,7 @@
 //! | E0011 | a Remote Processing gateway file (ROBOTGW.CFG, HOSTGW.CFG) is malformed or names a service twice, or a host stick loads TCPGW.BIN |
 //! | W0001 | a name under `MS/OPEN-R` has lower-case letters (FAT stores it upper case) |
 //! | W0002 | a registered subject or observer (or gateway service) is never connected |
-//! | W0003 | a gateway service is in more than one connection, or TCPGW.BIN has no ROBOTGW.CFG |
+//! | W0003 | what the gateway warns about at start: a gateway service in more than one connection, TCPGW.BIN without ROBOTGW.CFG, an unknown line option, an address on a robot line |
 //! | W0004 | a connection is listed twice on a Remote Processing stick (left out, as the runtime does) |
 use std::path::PathBuf;
 

@@ -96,6 +96,23 @@ pub struct Channel<'a> {
     pub options: &'a [String],
 }
 
+impl Channel<'_> {
+    /// What the gateway warns about this line at start (and `cargo openr check` too).
+    pub fn warnings(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        for o in self.options {
+            let key = o.split('=').next().unwrap_or("");
+            if !matches!(key, "dskip" | "dmin" | "dmax") {
+                out.push(format!("unknown option `{o}` ignored (known: dskip, dmin, dmax)"));
+            }
+        }
+        if self.peer == (Peer::Listen { addr_given: true }) {
+            out.push("the robot listens, the address on this line is ignored".into());
+        }
+        out
+    }
+}
+
 /// The lines of a gateway file (HOSTGW.CFG when `host`) as channels, checked as a whole
 /// without opening anything, so that `cargo openr check` refuses what a run would: one
 /// proxy line, each service once, one channel per port (and robot, on the host), an
@@ -151,11 +168,8 @@ fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::re
     let (mut links, mut targets) = (Vec::new(), Vec::new());
     for c in channels {
         let (port, place) = (c.port, format!("{file}:{}", c.line));
-        for o in c.options {
-            let key = o.split('=').next().unwrap_or("");
-            if !matches!(key, "dskip" | "dmin" | "dmax") {
-                super::warn(&format!("{place}: unknown option `{o}` ignored (known: dskip, dmin, dmax)"));
-            }
+        for w in c.warnings() {
+            super::warn(&format!("{place}: {w}"));
         }
         let hello = Hello { suffix: c.suffix, port, name: c.name.to_string(), place: place.clone() };
         let target = match c.peer {
@@ -163,10 +177,7 @@ fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::re
                 let (a, p) = net.remote(u32::from(ip), port, "gateway channel");
                 Target::Connect(SocketAddrV4::new(Ipv4Addr::from(a), p))
             }
-            Peer::Listen { addr_given } => {
-                if addr_given {
-                    super::warn(&format!("{place}: the robot listens, the address on this line is ignored"));
-                }
+            Peer::Listen { .. } => {
                 let p = net.local_port(port, "gateway channel").ok_or_else(|| format!("{place}: port {port} moved by --port-offset does not fit"))?;
                 let at = SocketAddrV4::new(Ipv4Addr::from(net.bind), p);
                 let l = TcpListener::bind(at).map_err(|e| format!("{place}: cannot listen on {at} for channel {port}: {e}"))?;

@@ -84,12 +84,19 @@ fn read(ms: &MsDir, name: &str, shown: &dyn Fn(&Path) -> PathBuf, report: &mut R
     };
     // What the run would refuse of the lines as a whole (one channel per port, …); the
     // services are the lines all the same, so connections to them are not unknown too.
-    if let Err((line, message)) = sdk_runtime::gateway::channels(&lines, host) {
-        report.push(
+    match sdk_runtime::gateway::channels(&lines, host) {
+        Ok(channels) => {
+            for c in &channels {
+                for w in c.warnings() {
+                    report.push(Diagnostic::warning("W0003", w).at(&file, Some(c.line)).help("the run says so too, and goes on"));
+                }
+            }
+        }
+        Err((line, message)) => report.push(
             Diagnostic::error("E0011", format!("the gateway would not start: {message}"))
                 .at(&file, Some(line))
                 .help("each line is one service and one channel: its own name and port (on the host, its robot's address or the `!ROBOT_PROXY` line's); one proxy line at most"),
-        );
+        ),
     }
     let mut out: Vec<GwService> = Vec::new();
     for l in lines {
