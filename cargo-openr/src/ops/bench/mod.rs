@@ -183,18 +183,22 @@ pub enum Group {
 /// installed SDK root. `progress` is told when each round starts.
 pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path, runs: usize, only: &[Group], mut progress: impl FnMut(usize)) -> Result<Report> {
     let programs = repo.join("bench/programs");
-    let camwatch = build(&programs.join("camwatch"), work, root)?;
-    let movehead = build(&repo.join("testdata/programs/movehead"), work, root)?;
+    let wanted = |g: Group| only.is_empty() || only.contains(&g);
+    // Only what the wanted groups run is built; the others' paths stay empty, unused.
+    let any = |gs: &[Group]| gs.iter().any(|g| wanted(*g));
+    let build_if = |needed: bool, program: PathBuf| if needed { build(&program, work, root) } else { Ok(PathBuf::new()) };
+    let camera_programs = any(&[Group::Camera, Group::Robots]);
+    let camwatch = build_if(camera_programs, programs.join("camwatch"))?;
+    let movehead = build_if(wanted(Group::Camera), repo.join("testdata/programs/movehead"))?;
     let b = Built {
-        pingpong: build(&programs.join("pingpong"), work, root)?,
-        coldstart: build(&programs.join("coldstart"), work, root)?,
-        movelegs: build(&repo.join("testdata/programs/movelegs"), work, root)?,
-        jitter: build(&programs.join("sensorjitter"), work, root)?,
-        camhead: camera::camera_head_ms(&movehead, &camwatch, work)?,
+        pingpong: build_if(any(&[Group::Messages, Group::Frames, Group::Rp]), programs.join("pingpong"))?,
+        coldstart: build_if(wanted(Group::Coldstart), programs.join("coldstart"))?,
+        movelegs: build_if(wanted(Group::Frames), repo.join("testdata/programs/movelegs"))?,
+        jitter: build_if(wanted(Group::Jitter), programs.join("sensorjitter"))?,
+        camhead: if wanted(Group::Camera) { camera::camera_head_ms(&movehead, &camwatch, work)? } else { PathBuf::new() },
         camwatch,
         movehead,
     };
-    let wanted = |g: Group| only.is_empty() || only.contains(&g);
     let mut report = Report::default();
     for round in 0..runs.max(1) {
         progress(round + 1);
