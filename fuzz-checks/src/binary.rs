@@ -153,3 +153,47 @@ pub fn vectors(data: &[u8]) -> bool {
     }
     taken
 }
+
+/// A peer's payloads once the wire format has framed them. The first byte picks the
+/// message (READINGS, IMAGE, CLOCK), the next four are the peer's roles; the rest is
+/// the payload. READINGS are checked against every robot design's model: accepted
+/// readings name only the design's primitives, each of a role the peer holds; an
+/// IMAGE is accepted only with exactly its picture's bytes; CLOCK reads its flags.
+pub fn peer(data: &[u8]) -> bool {
+    use sdk_runtime::peer::{payload, wire};
+    use sdk_runtime::robot::model::RobotModel;
+    use sdk_runtime::robot::Design;
+    use std::sync::OnceLock;
+    static MODELS: OnceLock<Vec<RobotModel>> = OnceLock::new();
+    let Some((head, p)) = data.split_first_chunk::<5>() else { return false };
+    let roles = u32::from_le_bytes([head[1], head[2], head[3], head[4]]);
+    match head[0] % 3 {
+        0 => {
+            let Ok(r) = wire::parse_readings(p) else { return false };
+            let mut taken = false;
+            for model in MODELS.get_or_init(|| Design::ALL.into_iter().map(RobotModel::new).collect()) {
+                match payload::check_readings(model, roles, &r) {
+                    Ok(()) => {
+                        taken = true;
+                        assert!(r.joints.iter().chain(&r.sensors).all(|&(id, _)| model.primitive(id).is_some()));
+                    }
+                    Err((code, text)) => assert!((code == wire::E_BAD_PAYLOAD || code == wire::E_ROLE) && text.starts_with("READINGS: ")),
+                }
+            }
+            taken
+        }
+        1 => {
+            // A small picture whose size comes from the roles' bytes.
+            let (w, h) = (1 + (roles & 7) as usize, 1 + ((roles >> 3) & 7) as usize);
+            let Ok(rgb) = payload::parse_image(p, w, h) else { return false };
+            assert_eq!(rgb.len(), w * h * 3);
+            assert_eq!(&p[..4], [(w as u16).to_le_bytes(), (h as u16).to_le_bytes()].concat());
+            true
+        }
+        _ => {
+            let Ok(flags) = payload::parse_clock(p) else { return false };
+            assert_eq!(flags.to_le_bytes(), p[..4]);
+            true
+        }
+    }
+}

@@ -9,7 +9,7 @@ mod binary;
 pub mod gen;
 mod text;
 
-pub use binary::{control, dns, elf, vectors, wire};
+pub use binary::{control, dns, elf, peer, vectors, wire};
 pub use text::{hostgw, ms_cfg, ocf, openr_toml, stub_cfg, wlan};
 
 /// A fuzz target: its name (as in `fuzz/fuzz_targets/<name>.rs`) and its check.
@@ -63,6 +63,7 @@ pub const TARGETS: &[Target] = &[
         check: vectors,
         dict: &[b"\x03\x01\x00\x00", b"\x07\x01\x00\x00", b"\x10\x00\x00\x00", b"\x15\x00\x00\x00", b"\x00\x00\x00\x01", b"\x10\x00", b"\xff\xff\xff\xff"],
     },
+    Target { name: "peer", check: peer, dict: &[b"\x00\xff\xff\xff\xff", b"\x01\x00\x00\x00\x00", b"\x02\x01\x00\x00\x00", b"\x00\x01\x00\x00"] },
     Target { name: "elf", check: elf, dict: &[b"\x7fELF\x02\x01\x01", b"\x3e\x00", b"\x03\x00", b"\x38\x00", b"\x1f\x8b\x08"] },
 ];
 
@@ -159,6 +160,15 @@ fn built_seeds(target: &str) -> Vec<Vec<u8>> {
             let mic = build_mic_vector(0x0404, 9, &[1, 2, 3, 4, 5, 6, 7, 8]).unwrap();
             let cdt = build_cdt_vector(0x0100_0000, &[(1, [cdt_entry(200, 100, 180, 90); 32]), (0x40, [0; 32])]);
             vec![cmd, mic, cdt]
+        }
+        "peer" => {
+            let payload = |kind: u8, roles: u32, p: &[u8]| [&[kind][..], &roles.to_le_bytes(), p].concat();
+            let ers7 = sdk_runtime::robot::model::RobotModel::new(sdk_runtime::robot::Design::Ers7);
+            let joint = ers7.open_primitive("PRM:/r2/c1-Joint2:21").expect("the ERS-7 has LF J1");
+            let r = sdk_runtime::robot::Readings { joints: vec![(joint, 7_000)], sensors: vec![] };
+            // A 2 x 3 picture (roles 0b010_001), CLOCK taking the clock.
+            let image = [&2u16.to_le_bytes()[..], &3u16.to_le_bytes(), &[9u8; 18]].concat();
+            vec![payload(0, wire::ROLE_ALL, &wire::readings(&r)), payload(1, 0b010_001, &image), payload(2, 0, &wire::FLAG_CLOCK.to_le_bytes())]
         }
         "elf" => {
             // Shared objects of the system (the tests of elf_check use them too), plain

@@ -75,6 +75,11 @@ fn vectors() {
 }
 
 #[test]
+fn peer() {
+    run("peer", 3000);
+}
+
+#[test]
 fn elf() {
     run("elf", 1000);
 }

@@ -4,8 +4,7 @@
 use std::io::Read;
 
 use super::wire::*;
-use super::{role_of, Hub, Peer, MIC_QUEUE_MAX};
-use crate::robot::Readings;
+use super::{payload, Hub, Peer, MIC_QUEUE_MAX};
 use crate::runtime::Runtime;
 
 /// Why a peer's connection ends, as a message handler sees it.
@@ -65,7 +64,7 @@ fn refuse_peer(rt: &Runtime, peer: &Peer, code: u16, text: String) -> String {
 fn on_readings(rt: &Runtime, peer: &Peer, frame: u32, payload: &[u8]) -> Handled {
     let hub = &rt.vr.peers;
     let r = parse_readings(payload).map_err(|e| Leave::Refuse(E_BAD_PAYLOAD, format!("READINGS: {e}")))?;
-    check_readings(rt, peer, &r).map_err(|(code, text)| Leave::Refuse(code, text))?;
+    payload::check_readings(rt.vr.robot().model(), peer.roles, &r).map_err(|(code, text)| Leave::Refuse(code, text))?;
     let mut st = hub.lock();
     if st.clock != Some(peer.id) {
         st.pending.push(r);
@@ -95,16 +94,9 @@ fn on_image(rt: &Runtime, peer: &Peer, payload: &[u8]) -> Handled {
     let robot = rt.vr.robot();
     let (w, h) = (robot.camera().rgb.width, robot.camera().rgb.height);
     drop(robot);
-    let mut i = In::new(payload);
-    let dims = (i.u16(), i.u16());
-    let rgb = i.rest();
-    match dims {
-        (Ok(pw), Ok(ph)) if pw as usize == w && ph as usize == h && rgb.len() == w * h * 3 => {
-            rt.vr.peers.lock().image = Some(rgb.to_vec());
-            Ok(())
-        }
-        _ => Err(Leave::Refuse(E_BAD_PAYLOAD, format!("IMAGE must be u16 width {w}, u16 height {h}, then {} RGB bytes", w * h * 3))),
-    }
+    let rgb = payload::parse_image(payload, w, h).map_err(|e| Leave::Refuse(E_BAD_PAYLOAD, e))?;
+    rt.vr.peers.lock().image = Some(rgb.to_vec());
+    Ok(())
 }
 
 /// MIC: sound appended to the microphone queue.
@@ -112,9 +104,7 @@ fn on_mic(hub: &Hub, peer: &Peer, payload: &[u8]) -> Handled {
     if peer.roles & ROLE_MIC == 0 {
         return Err(Leave::Refuse(E_ROLE, "MIC without the mic role".into()));
     }
-    if payload.len() % 4 != 0 {
-        return Err(Leave::Refuse(E_BAD_PAYLOAD, "MIC: 16-bit stereo PCM (a multiple of 4 bytes)".into()));
-    }
+    payload::check_mic(payload).map_err(|e| Leave::Refuse(E_BAD_PAYLOAD, e))?;
     let mut st = hub.lock();
     if st.mic.len() + payload.len() > MIC_QUEUE_MAX {
         return Err(Leave::Refuse(E_OVERFLOW, format!("MIC: more than {MIC_QUEUE_MAX} bytes queued")));
@@ -125,7 +115,7 @@ fn on_mic(hub: &Hub, peer: &Peer, payload: &[u8]) -> Handled {
 
 /// CLOCK: takes or gives up the clock, and answers with the peer's resulting state.
 fn on_clock(hub: &Hub, peer: &Peer, payload: &[u8]) -> Handled {
-    let flags = In::new(payload).u32().map_err(|e| Leave::Refuse(E_BAD_PAYLOAD, format!("CLOCK: {e}")))?;
+    let flags = payload::parse_clock(payload).map_err(|e| Leave::Refuse(E_BAD_PAYLOAD, e))?;
     let mut st = hub.lock();
     if flags & FLAG_CLOCK != 0 {
         if st.clock.is_none() {
@@ -141,27 +131,4 @@ fn on_clock(hub: &Hub, peer: &Peer, payload: &[u8]) -> Handled {
     let mut o = Out::default();
     o.u32(if owns { FLAG_CLOCK } else { 0 });
     peer.send(CLOCK, frame, &o.0).map_err(Leave::Quit)
-}
-
-/// Every primitive of a READINGS message is known and belongs to a role of the peer.
-fn check_readings(rt: &Runtime, peer: &Peer, r: &Readings) -> std::result::Result<(), (u16, String)> {
-    let robot = rt.vr.robot();
-    let model = robot.model();
-    for &(id, _) in r.joints.iter().chain(&r.sensors) {
-        let Some(p) = model.primitive(id) else {
-            return Err((E_BAD_PAYLOAD, format!("READINGS: unknown primitive ID {id:#x}")));
-        };
-        let Some(role) = role_of(p.kind) else {
-            return Err((E_BAD_PAYLOAD, format!("READINGS: {} ({id:#x}) has no readings", p.locator)));
-        };
-        let is_joint = r.joints.iter().any(|&(j, _)| j == id);
-        if is_joint != (role == ROLE_JOINTS) {
-            return Err((E_BAD_PAYLOAD, format!("READINGS: {} ({id:#x}) listed in the wrong section", p.locator)));
-        }
-        if peer.roles & role == 0 {
-            let name = ROLE_NAMES[role.trailing_zeros() as usize];
-            return Err((E_ROLE, format!("READINGS: {} needs the {name} role, which this peer does not hold", p.locator)));
-        }
-    }
-    Ok(())
 }

@@ -13,6 +13,7 @@
 //! the built-in model continues from there.
 mod messages;
 mod outbox;
+pub mod payload;
 #[cfg(test)]
 mod python_agrees;
 pub mod wire;
