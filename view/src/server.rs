@@ -130,7 +130,8 @@ fn answer_live(rt: &'static Runtime, mut req: Request) -> Answer {
         (Method::Get, "/") => page(&script_json(&crate::snapshot::take(rt)), "null", "null"),
         (Method::Get, "/state") => Response::from_string(crate::snapshot::take(rt).to_string()).with_header(header("Content-Type", "application/json")),
         (Method::Get, "/camera.png") => match camera_png(rt) {
-            Ok(png) => Response::from_data(png).with_header(header("Content-Type", "image/png")),
+            Ok(Some(png)) => Response::from_data(png).with_header(header("Content-Type", "image/png")),
+            Ok(None) => Response::from_string("the camera has taken no picture yet\n").with_status_code(404),
             Err(e) => Response::from_string(format!("cannot encode the camera picture: {e}\n")).with_status_code(500),
         },
         (Method::Post, "/control") => {
@@ -179,12 +180,16 @@ fn answer_world(w: &crate::world::Live, mut req: Request) -> Answer {
 }
 
 /// The camera's last picture (sensor resolution, RGB) as PNG: encoded only when a
-/// browser asks for it, outside the robot's lock.
-fn camera_png(rt: &Runtime) -> std::result::Result<Vec<u8>, png::EncodingError> {
+/// browser asks for it, outside the robot's lock. None before the first picture (a
+/// program that never opens the camera has none at all).
+fn camera_png(rt: &Runtime) -> std::result::Result<Option<Vec<u8>>, png::EncodingError> {
     let (w, h, data) = {
         let robot = rt.vr.robot();
         let img = robot.camera_rgb();
+        if img.data.is_empty() {
+            return Ok(None);
+        }
         (img.width as u32, img.height as u32, img.data.clone())
     };
-    crate::record::encode_png(w, h, &data)
+    crate::record::encode_png(w, h, &data).map(Some)
 }

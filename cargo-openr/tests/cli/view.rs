@@ -264,3 +264,20 @@ fn page_follows_the_run() {
     let shown: u64 = text_of_id(&dom, "t_ms").parse().unwrap();
     assert!(shown > initial, "the page drew a later state than the one it was served with ({shown} ms vs {initial} ms)");
 }
+
+#[test]
+fn camera_png_is_not_found_while_the_camera_took_no_picture() {
+    // hello never opens the camera: the run has no picture to show, which is no
+    // server error.
+    let p = build("hello");
+    let mut run = spawn_ms(&p.ms(), &["--view", "--speed", "max"], &[]);
+    let addr = view_addr(&mut run);
+    pause_after(&addr, 200);
+    let (code, body) = http(&addr, "GET", "/camera.png", "");
+    let (_, state) = http(&addr, "GET", "/state", "");
+    let _ = run.stop();
+    assert_eq!(code, 404, "{body}");
+    assert!(body.contains("no picture"), "{body}");
+    let state: serde_json::Value = serde_json::from_str(&state).unwrap();
+    assert_eq!(state["camera_images"], 0, "{state}");
+}
