@@ -134,6 +134,8 @@ pub(crate) struct ObserverState {
     subjects: Vec<OServiceEntry>,
     /// Received regions not yet given back: (subject, its handle).
     held: Vec<(OServiceEntry, *mut c_void)>,
+    /// `SetBufCtrlParam`: (d_skip, d_min, d_max), sent to each subject as it connects.
+    pub(crate) buf: (usize, usize, usize),
 }
 
 impl SubjectState {
@@ -309,7 +311,13 @@ fn send_notify(self_id: OServiceEntry, o: &mut ObserverRec) -> bool {
 
 impl ObserverState {
     pub(crate) fn new(name: &str, oid: *mut c_void, k: usize) -> ObserverState {
-        ObserverState { name: name.into(), id: OServiceEntry { oid, selector: observer_selectors(k).1 }, subjects: Vec::new(), held: Vec::new() }
+        ObserverState {
+            name: name.into(),
+            id: OServiceEntry { oid, selector: observer_selectors(k).1 },
+            subjects: Vec::new(),
+            held: Vec::new(),
+            buf: (0, 1, 1),
+        }
     }
 
     pub(crate) fn num_subjects(&self) -> usize {
@@ -317,7 +325,8 @@ impl ObserverState {
     }
 
     pub(crate) fn control_message(&self, command: u32, sub_name: &[u8; 128]) -> OControlMessage {
-        OControlMessage { msg_type: abi::OMSG_CONTROL, command, observer_id: self.id, d_skip: 0, d_min: 1, d_max: 1, sub_name: *sub_name }
+        let (d_skip, d_min, d_max) = self.buf;
+        OControlMessage { msg_type: abi::OMSG_CONTROL, command, observer_id: self.id, d_skip, d_min, d_max, sub_name: *sub_name }
     }
 
     /// Calls a subject of another object.

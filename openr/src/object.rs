@@ -186,6 +186,18 @@ impl<T: ?Sized + Payload> Observer<T> {
         ctx.observers[self.index].ready_all(abi::CMD_DEASSERT_READY)
     }
 
+    /// `SetBufCtrlParam` (object-model 2.8): every `skip + 1`th notification, at least
+    /// `min` and at most `max` per delivery; sent to the subjects as they connect, so
+    /// call it before the connection (in `init`). `max < min` (or `min` 0) is refused
+    /// (`Fail`) and the values stay as they were.
+    pub fn set_buf_ctrl_param(&self, ctx: &mut Context, skip: usize, min: usize, max: usize) -> Status {
+        if max < min || min == 0 {
+            return Status::Fail;
+        }
+        ctx.observers[self.index].buf = (skip, min, max);
+        Status::Success
+    }
+
     /// Connected subjects.
     pub fn subjects(&self, ctx: &Context) -> usize {
         ctx.observers[self.index].num_subjects()

@@ -128,6 +128,36 @@ fn rp2_subjects_on_the_robot_feed_observers_on_the_host() {
     assert!(r_out.stderr.contains("ROBOTGW.CFG:5: channel") && r_out.stderr.contains("connected (TCPGateway.ReceiveString11.char.S"), "{}", r_out.stderr);
 }
 
+/// `dskip=1` on a gateway observer line is that observer's `SetBufCtrlParam(1, 1, 1)`:
+/// the subject on the robot passes it every second notification, so the host's
+/// SampleObserver1 sees SampleSubject1's #2 only; the other connections are unchanged.
+#[test]
+fn dskip_on_a_gateway_observer_line_passes_every_second_notification() {
+    let tmp = tempfile::tempdir().unwrap();
+    let p = ports(5);
+    let r_ms = side(&multi().join("RP2/robot"), &tmp.path().join("robot"), &p);
+    let gw = r_ms.join("OPEN-R/MW/CONF/ROBOTGW.CFG");
+    let text = fs::read_to_string(&gw)
+        .unwrap()
+        .replace(&format!("TCPGateway.SendString11.char.O {}", p[1]), &format!("TCPGateway.SendString11.char.O {} dskip=1", p[1]));
+    assert!(text.contains("dskip=1"), "{text}");
+    fs::write(&gw, text).unwrap();
+    let h_ms = side(&multi().join("RP2/host"), &tmp.path().join("host"), &p);
+    let rob = robot(&r_ms);
+    assert!(wait_stderr(&rob, "Running"), "{}", rob.stderr());
+    let mut h = host(&h_ms, &[]);
+    let got = wait_lines(&mut h, "SampleObserver", 7);
+    // Past the 7 lines: nothing else may come.
+    std::thread::sleep(Duration::from_millis(500));
+    let h_out = h.stop();
+    let got_all = sorted(h_out.stdout.lines().filter(|l| l.starts_with("SampleObserver")).map(str::to_string));
+    let want: Vec<String> = observer_lines().into_iter().filter(|l| l != "SampleObserver1::Notify() !!! Hello from SampleSubject1 (#1) !!!").collect();
+    assert_eq!(got, want, "host:\n{}\n{}", h_out.stdout, h_out.stderr);
+    assert_eq!(got_all, want, "host:\n{}", h_out.stdout);
+    let r_out = rob.stop();
+    assert!(!r_out.stderr.contains("dskip"), "a valid option is not warned about:\n{}", r_out.stderr);
+}
+
 /// RP3, the mirror: subjects on the host, observers on the robot.
 #[test]
 fn rp3_subjects_on_the_host_feed_observers_on_the_robot() {

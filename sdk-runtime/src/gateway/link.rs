@@ -30,6 +30,8 @@ pub struct Link {
     /// `…/ROBOTGW.CFG:3`: where the line is, for every message about it.
     pub place: String,
     pub hello: Hello,
+    /// An observer line's dskip/dmin/dmax (`SetBufCtrlParam` of the gateway's observer).
+    pub buf_ctrl: (usize, usize, usize),
     conn: Mutex<Option<(u64, TcpStream)>>,
     changed: Condvar,
     next_id: AtomicU64,
@@ -38,7 +40,16 @@ pub struct Link {
 
 impl Link {
     pub fn new(channel: usize, place: String, hello: Hello) -> Link {
-        Link { channel, place, hello, conn: Mutex::new(None), changed: Condvar::new(), next_id: AtomicU64::new(1), ever_connected: AtomicBool::new(false) }
+        Link {
+            channel,
+            place,
+            hello,
+            buf_ctrl: (0, 1, 1),
+            conn: Mutex::new(None),
+            changed: Condvar::new(),
+            next_id: AtomicU64::new(1),
+            ever_connected: AtomicBool::new(false),
+        }
     }
 
     fn lock(&self) -> MutexGuard<'_, Option<(u64, TcpStream)>> {

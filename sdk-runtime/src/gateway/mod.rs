@@ -145,7 +145,12 @@ impl Object for Gateway {
             .iter()
             .map(|l| match l.hello.suffix {
                 b'S' => End::Sub(ctx.subject::<[u8]>(&l.hello.name)),
-                b'O' => End::Obs(ctx.observer::<[u8]>(&l.hello.name)),
+                b'O' => {
+                    let o = ctx.observer::<[u8]>(&l.hello.name);
+                    let (skip, min, max) = l.buf_ctrl;
+                    o.set_buf_ctrl_param(ctx, skip, min, max);
+                    End::Obs(o)
+                }
                 _ => End::Proxy,
             })
             .collect();

@@ -97,6 +97,26 @@ pub struct Channel<'a> {
 }
 
 impl Channel<'_> {
+    /// The line's `dskip=`, `dmin=`, `dmax=` as the gateway observer's buffer control
+    /// (d_skip, d_min, d_max), defaults (0, 1, 1); unknown keys are left to `warnings`.
+    pub fn buf_ctrl(&self) -> std::result::Result<(usize, usize, usize), String> {
+        let (mut skip, mut min, mut max) = (0, 1, 1);
+        for o in self.options {
+            let (key, value) = o.split_once('=').unwrap_or((o, ""));
+            let slot = match key {
+                "dskip" => &mut skip,
+                "dmin" => &mut min,
+                "dmax" => &mut max,
+                _ => continue,
+            };
+            *slot = value.parse().map_err(|_| format!("`{o}`: expected a whole number after `{key}=`"))?;
+        }
+        if min == 0 || max < min {
+            return Err(format!("dmin={min} dmax={max}: expected 1 <= dmin <= dmax"));
+        }
+        Ok((skip, min, max))
+    }
+
     /// What the gateway warns about this line at start (and `cargo openr check` too).
     pub fn warnings(&self) -> Vec<String> {
         let mut out = Vec::new();
@@ -105,6 +125,11 @@ impl Channel<'_> {
             if !matches!(key, "dskip" | "dmin" | "dmax") {
                 out.push(format!("unknown option `{o}` ignored (known: dskip, dmin, dmax)"));
             }
+        }
+        match self.buf_ctrl() {
+            Err(e) => out.push(format!("{e}; the defaults dskip=0 dmin=1 dmax=1 are used")),
+            Ok(b) if b != (0, 1, 1) && self.suffix != b'O' => out.push("dskip, dmin and dmax are an observer's (a `.O` line's); ignored here".into()),
+            Ok(_) => {}
         }
         if self.peer == (Peer::Listen { addr_given: true }) {
             out.push("the robot listens, the address on this line is ignored".into());
@@ -184,7 +209,11 @@ fn prepare(file: &str, lines: &[GwLine], host: bool, net: &NetConfig) -> std::re
                 Target::Listen(l)
             }
         };
-        links.push(Arc::new(Link::new(links.len(), place, hello)));
+        let mut link = Link::new(links.len(), place, hello);
+        if c.suffix == b'O' {
+            link.buf_ctrl = c.buf_ctrl().unwrap_or((0, 1, 1));
+        }
+        links.push(Arc::new(link));
         targets.push(target);
     }
     Ok((links, targets))
@@ -243,5 +272,23 @@ mod tests {
         // Two robots may use the same port.
         let lines = gwcfg::parse("HOSTGW.CFG", "A.B.char.S 59002 127.0.0.1\nA.C.char.O 59002 127.0.0.2\n").unwrap();
         assert!(prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), true)).is_ok());
+    }
+
+    #[test]
+    fn an_observer_lines_options_are_its_buffer_control_and_bad_ones_are_said() {
+        let text = "A.In.char.O 59001 127.0.0.1 dmax=8 dmin=2 dskip=1\nA.Out.char.S 59002 127.0.0.1 dmax=4\n\
+                    A.Bad.char.O 59003 127.0.0.1 dmax=x\nA.Low.char.O 59004 127.0.0.1 dmin=3 dmax=2\nA.Odd.char.O 59005 127.0.0.1 dfoo=1\n";
+        let lines = gwcfg::parse("HOSTGW.CFG", text).unwrap();
+        let ch = channels(&lines, true).unwrap();
+        assert_eq!(ch[0].buf_ctrl(), Ok((1, 2, 8)));
+        assert!(ch[0].warnings().is_empty(), "{:?}", ch[0].warnings());
+        assert_eq!(ch[1].warnings(), ["dskip, dmin and dmax are an observer's (a `.O` line's); ignored here"]);
+        assert_eq!(ch[2].warnings(), ["`dmax=x`: expected a whole number after `dmax=`; the defaults dskip=0 dmin=1 dmax=1 are used"]);
+        assert_eq!(ch[3].warnings(), ["dmin=3 dmax=2: expected 1 <= dmin <= dmax; the defaults dskip=0 dmin=1 dmax=1 are used"]);
+        assert_eq!(ch[4].buf_ctrl(), Ok((0, 1, 1)));
+        assert_eq!(ch[4].warnings(), ["unknown option `dfoo=1` ignored (known: dskip, dmin, dmax)"]);
+        let (links, _) = prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), true)).unwrap();
+        let bufs: Vec<_> = links.iter().map(|l| l.buf_ctrl).collect();
+        assert_eq!(bufs, [(1, 2, 8), (0, 1, 1), (0, 1, 1), (0, 1, 1), (0, 1, 1)], "only an observer line's valid options apply");
     }
 }
