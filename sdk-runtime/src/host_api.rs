@@ -330,6 +330,10 @@ pub(crate) fn fatal(kind: u32) {
 
 pub(crate) fn robot_design() -> *const c_char {
     inject_panic("robot_design");
+    // A Remote Processing host object asks the robot (through the API proxy).
+    if let Some(robot) = crate::gateway::proxy::robot_design() {
+        return robot.map_or(std::ptr::null(), |d| d.as_ptr());
+    }
     rt().map_or(c"ERS-7".as_ptr(), |rt| rt.design.as_ptr())
 }
 

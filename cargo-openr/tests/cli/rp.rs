@@ -190,7 +190,8 @@ fn rp_host_objects_get_ofail_for_robot_only_calls() {
     assert_eq!(stderr.matches("antStackRef: the ANT network library is not available to Remote Processing OPEN-R host objects").count(), 1, "{stderr}");
     // A host program with a HOSTGW.CFG is a host program under `cargo openr run` too.
     let conf = dir.join("RP/host/MS/OPEN-R/MW/CONF");
-    fs::write(conf.join("HOSTGW.CFG"), format!("! ROBOT_PROXY {} 127.0.0.1\n", free_port())).unwrap();
+    // (No proxy line: with one, GetRobotDesign would ask the robot; rp_gateway tests that.)
+    fs::write(conf.join("HOSTGW.CFG"), "# no channels\n").unwrap();
     let run = run_ms(&dir.join("RP/host/MS"), &["--for", "1s", "--speed", "max"]);
     assert_eq!(run.lines_starting("HostApi:"), host_lines, "{}", run.stderr);
     // The robot build of the same source has every call.

@@ -213,6 +213,27 @@ fn gateway_only_robot(dir: &Path, robotgw: &str) -> PathBuf {
     dir.join("MS")
 }
 
+/// A host object's GetRobotDesign answers the robot's design through the API proxy
+/// (remote-processing 7.4): rp-hostapi's host object against an ERS-210 robot.
+#[test]
+fn get_robot_design_on_the_host_answers_the_robots_design() {
+    let built = build("rp-hostapi");
+    let tmp = tempfile::tempdir().unwrap();
+    let port = ports(1)[0];
+    let r_ms = gateway_only_robot(&tmp.path().join("robot"), &format!("TCPGateway.Proxy.AperiosMessage.P {port}\n"));
+    let h_ms = tmp.path().join("host/MS");
+    copy_tree(&built.dir.path().join("rp-hostapi/RP/host/MS"), &h_ms);
+    fs::write(h_ms.join("OPEN-R/MW/CONF/HOSTGW.CFG"), format!("!ROBOT_PROXY {port} 127.0.0.1\n")).unwrap();
+    let rob = spawn_ms(&r_ms, &["--for", "600s", "--design", "ERS-210"], &[]);
+    assert!(wait_stderr(&rob, "Running"), "{}", rob.stderr());
+    let mut h = host(&h_ms, &[]);
+    let asked = h.wait_for("HostApi: GetRobotDesign", PATIENCE);
+    let h_out = h.stop();
+    rob.stop();
+    assert!(asked, "{}\n{}", h_out.stdout, h_out.stderr);
+    assert!(h_out.stdout.contains("HostApi: GetRobotDesign ok (ERS-210)"), "the host runs as an ERS-7:\n{}\n{}", h_out.stdout, h_out.stderr);
+}
+
 /// A host MS with no objects of its own, with this HOSTGW.CFG.
 fn gateway_only_host(dir: &Path, hostgw: &str) -> PathBuf {
     let conf = dir.join("MS/OPEN-R/MW/CONF");

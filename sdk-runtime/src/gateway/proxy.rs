@@ -19,6 +19,7 @@ pub const JOINT_VALUE: u8 = 4;
 pub const SENSOR_VALUE: u8 = 5;
 pub const SET_MOTOR_POWER: u8 = 6;
 pub const POWER_STATUS: u8 = 7;
+pub const ROBOT_DESIGN: u8 = 8;
 
 /// How long a call waits for the proxy connection to come up.
 const CONNECT_WAIT: Duration = Duration::from_secs(10);
@@ -50,6 +51,20 @@ fn once_unreachable(link: &Link) {
     if !SAID.swap(true, std::sync::atomic::Ordering::AcqRel) {
         super::warn(&format!("{}: the robot's OPEN-R API proxy is not reachable: OPENR:: calls of host objects return oFAIL", link.place));
     }
+}
+
+/// `GetRobotDesign` of a host object: the robot's design, asked once (it never changes
+/// during a run). None when this run has no proxy; Some(None) when the robot cannot be
+/// reached (then it is asked again next time).
+pub fn robot_design() -> Option<Option<&'static std::ffi::CStr>> {
+    static DESIGN: OnceLock<std::ffi::CString> = OnceLock::new();
+    if let Some(d) = DESIGN.get() {
+        return Some(Some(d.as_c_str()));
+    }
+    let reply = call(ROBOT_DESIGN, &[])?;
+    let (status, name) = split(&reply);
+    let name = std::ffi::CString::new(name).ok().filter(|_| status == O_SUCCESS);
+    Some(name.map(|n| DESIGN.get_or_init(|| n).as_c_str()))
 }
 
 /// The status of a reply and the out-values after it.
@@ -127,6 +142,11 @@ fn run(api: u8, args: &[u8], out: &mut Vec<u8>) -> Option<u32> {
             unsafe { crate::host_api::power_status(&mut p) };
             // SAFETY: a repr(C) struct of 32-bit integers, no padding.
             out.extend_from_slice(unsafe { std::slice::from_raw_parts((&p as *const crate::power::PowerState).cast::<u8>(), std::mem::size_of_val(&p)) });
+            O_SUCCESS
+        }
+        ROBOT_DESIGN => {
+            let rt = crate::runtime::Runtime::get()?;
+            out.extend_from_slice(rt.design.as_bytes());
             O_SUCCESS
         }
         _ => return None,
