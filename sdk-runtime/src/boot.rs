@@ -224,6 +224,7 @@ fn install(
         vectors: Mutex::new(Vec::new()),
         sched,
         signal: std::sync::atomic::AtomicI32::new(0),
+        links: Default::default(),
     }))
 }
 

@@ -29,6 +29,7 @@ pub mod host_api;
 pub mod interpose;
 pub mod lifecycle;
 pub mod link_check;
+pub mod links;
 pub mod loader;
 pub mod ms;
 pub mod net;

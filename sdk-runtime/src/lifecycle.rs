@@ -207,6 +207,7 @@ fn connect_all(
     watchdog: Duration,
     failures: &mut Failures,
 ) -> Result<std::result::Result<(), Interrupted>> {
+    let mut made = Vec::new();
     for c in conns {
         let (subject, observer) = (rt.service(&c.subject), rt.service(&c.observer));
         let (Some(subject), Some(observer)) = (subject, observer) else {
@@ -252,6 +253,7 @@ fn connect_all(
                     rt.diag.warn(&format!("{}:{}: connection refused (status {status})", path.display(), c.line));
                 } else {
                     rt.diag.info(&format!("connected {} -> {}", c.subject, c.observer));
+                    made.push((subject.clone(), observer.clone()));
                     if observer.oid < FIRST_OID {
                         rt.vr.connected(rt, observer.oid, watchdog);
                     }
@@ -260,5 +262,6 @@ fn connect_all(
             None => rt.diag.warn(&format!("{}:{}: connection failed (no answer)", path.display(), c.line)),
         }
     }
+    rt.links.set(made);
     Ok(Ok(()))
 }

@@ -121,6 +121,8 @@ pub struct Runtime {
     pub sched: crate::sched::Sched,
     /// SIGINT/SIGTERM/SIGHUP received (0: none), seen by every phase of the run.
     pub signal: std::sync::atomic::AtomicI32,
+    /// CONNECT.CFG's made connections and their message counts (the view shows them).
+    pub links: crate::links::Links,
 }
 
 /// `Runtime::fatal` before any `OPENR::Fatal` (ofatalUNDEF is u32::MAX, a real value).
@@ -168,7 +170,9 @@ impl Runtime {
     /// Queues a message (asynchronous `Send`).
     pub fn send(&self, dest: usize, selector: u32, data: Vec<u8>) -> Result<(), CallError> {
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
-        enqueue(&self.sched, &slot, Envelope { selector, data, reply: None, caller: None })
+        enqueue(&self.sched, &slot, Envelope { selector, data, reply: None, caller: None })?;
+        self.links.count(|| crate::object::current().map(|me| me.oid), dest, selector);
+        Ok(())
     }
 
     /// Whether a frame may start while every object is idle: the boot sequence is not

@@ -6,6 +6,7 @@ use sdk_runtime::robot::kinematics::LedState;
 use sdk_runtime::robot::model::{degrees, PrimitiveKind, SensorKind};
 use sdk_runtime::runtime::Runtime;
 use serde_json::{json, Value};
+use std::sync::atomic::Ordering;
 
 /// Degrees rounded to 3 decimals, as the trace writes them.
 fn deg3(urad: f64) -> f64 {
@@ -60,8 +61,23 @@ pub fn take(rt: &Runtime) -> Value {
         "leds": leds,
         "ears": ears,
         "sensors": sensors,
+        "objects": objects(rt),
+        "connections": connections(rt),
         "battery": { "remaining_pct": power.remaining_capacity, "voltage_mv": power.voltage, "current_ma": power.current, "temperature_cc": power.temperature },
     })
+}
+
+/// The program's objects (OBJECT.CFG's, not the system's), in load order.
+fn objects(rt: &Runtime) -> Vec<String> {
+    rt.all_objects().iter().filter(|o| o.oid >= sdk_runtime::runtime::FIRST_OID).map(|o| o.name().to_string()).collect()
+}
+
+/// The made connections with the messages delivered on each so far.
+pub fn connections(rt: &Runtime) -> Value {
+    let links = rt.links.all().iter().map(|l| {
+        json!({ "subject": l.subject, "observer": l.observer, "notify": l.notify.count.load(Ordering::Relaxed), "ready": l.ready.count.load(Ordering::Relaxed) })
+    });
+    Value::Array(links.collect())
 }
 
 fn sensor_kind(k: SensorKind) -> &'static str {

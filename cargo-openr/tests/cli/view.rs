@@ -281,3 +281,25 @@ fn camera_png_is_not_found_while_the_camera_took_no_picture() {
     let state: serde_json::Value = serde_json::from_str(&state).unwrap();
     assert_eq!(state["camera_images"], 0, "{state}");
 }
+
+#[test]
+fn page_lists_the_objects_and_counts_the_messages_of_each_connection() {
+    let p = build("pingpong");
+    let mut run = spawn_ms(&p.ms(), &["--view", "--speed", "max"], &[]);
+    let addr = view_addr(&mut run);
+    let url = format!("http://{addr}/");
+    let link = "Ping.Ball.longword.S Pong.Ball.longword.O";
+    let count = |dom: &str, class: &str| -> u64 { cell(dom, link, class).parse().unwrap() };
+    pause_after(&addr, 200);
+    let dom1 = chromium(&url, None);
+    control(&addr, "resume");
+    pause_after(&addr, 600);
+    let dom2 = chromium(&url, None);
+    let _ = run.stop();
+    assert_eq!(text_of_id(&dom1, "objects"), "ping, pong", "the program's objects, by their ocf NAME");
+    let (n1, n2) = (count(&dom1, "link-notify"), count(&dom2, "link-notify"));
+    assert!(n1 > 0 && n2 > n1, "the ball's notifications: {n1} at the first look, {n2} at the second");
+    // Each notification Pong answers with one ready.
+    let (r1, r2) = (count(&dom1, "link-ready"), count(&dom2, "link-ready"));
+    assert!(r1 > 0 && r2 > r1, "the ready messages: {r1}, then {r2}");
+}
