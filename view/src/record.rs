@@ -140,12 +140,13 @@ impl Observer for Recorder {
 }
 
 /// What the page shows that the trace lacks, at a sensor frame: the joints' targets,
-/// every sensor, the battery (the live snapshot's values).
+/// every sensor, the battery, the objects and their connections' message counts (the
+/// live snapshot's values).
 fn view_record(rt: &Runtime, f: &Frame<'_>) -> serde_json::Value {
     let s = crate::snapshot::take(rt);
     let targets: serde_json::Map<String, serde_json::Value> =
         s["joints"].as_array().into_iter().flatten().map(|j| (j["locator"].as_str().unwrap_or("").to_string(), j["target_deg"].clone())).collect();
-    serde_json::json!({ "t_ms": f.t_ms, "frame": f.frame, "targets": targets, "sensors": s["sensors"], "battery": s["battery"] })
+    serde_json::json!({ "t_ms": f.t_ms, "frame": f.frame, "targets": targets, "sensors": s["sensors"], "battery": s["battery"], "objects": s["objects"], "connections": s["connections"] })
 }
 
 struct Writer {

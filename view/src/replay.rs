@@ -366,10 +366,13 @@ impl Now {
             sensors = merged;
         }
         let battery = view.map_or(Value::Null, |v| v["battery"].clone());
+        // Recordings made before the view counted messages have neither.
+        let (objects, connections) = view.map_or((Value::Null, Value::Null), |v| (v["objects"].clone(), v["connections"].clone()));
         json!({
             "design": design.name(), "frame": frame, "t_ms": t, "paused": false, "speed": "replay",
             "motor_power": self.motor_power, "camera_images": camera_images, "face_mode": self.face_mode,
             "joints": joints, "leds": leds, "ears": ears, "sensors": sensors, "battery": battery,
+            "objects": objects, "connections": connections,
         })
     }
 }

@@ -355,3 +355,47 @@ fn a_long_recording_is_served_in_chunks() {
     assert!(shown > times[2 * chunk], "playing went past the first two chunks: {shown} ms");
     assert_shows(&played, &trace, shown, "play");
 }
+
+#[test]
+fn a_recording_replays_the_message_counts_of_each_connection() {
+    let p = build("pingpong");
+    let dir = tempfile::tempdir().unwrap();
+    let rec = dir.path().join("rec");
+    let out = run_ms(&p.ms(), &["--speed", "max", "--for", "2s", "--record", rec.to_str().unwrap()]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let views = read_trace(&rec.join("view.jsonl"));
+    let link = "Ping.Ball.longword.S Pong.Ball.longword.O";
+    let notify = |v: &serde_json::Value| v["connections"][0]["notify"].as_u64().unwrap();
+    let first = views.iter().find(|v| notify(v) > 0).expect("a view record after the first notification");
+    let last = views.last().unwrap();
+    let view = spawn_view(&rec);
+    let url = format!("http://{}/", view.addr);
+    let mut shown = Vec::new();
+    for v in [first, last] {
+        let dom = chromium(&format!("{url}?t={}", v["t_ms"]), None);
+        let t: u64 = text_of_id(&dom, "t_ms").parse().unwrap();
+        let recorded = views.iter().filter(|v| v["t_ms"].as_u64().unwrap() <= t).last().unwrap();
+        let n: u64 = cell(&dom, link, "link-notify").parse().unwrap();
+        assert_eq!(n, notify(recorded), "at {t} ms the page shows the recorded count");
+        assert_eq!(text_of_id(&dom, "objects"), "ping, pong");
+        shown.push(n);
+    }
+    assert!(shown[1] > shown[0], "more messages later: {shown:?}");
+    drop(view);
+
+    // A recording made before the view counted messages still replays, without them.
+    let old: String = views
+        .iter()
+        .map(|v| {
+            let mut v = v.clone();
+            v.as_object_mut().unwrap().retain(|k, _| k != "objects" && k != "connections");
+            format!("{v}\n")
+        })
+        .collect();
+    std::fs::write(rec.join("view.jsonl"), old).unwrap();
+    let view = spawn_view(&rec);
+    let dom = chromium(&format!("http://{}/?t={}", view.addr, last["t_ms"]), None);
+    assert_eq!(text_of_id(&dom, "objects"), "–");
+    assert!(!dom.contains(&format!("data-locator=\"{link}\"")), "no connection rows");
+    assert!(text_of_id(&dom, "t_ms").parse::<u64>().unwrap() > 0, "the moment is shown");
+}
