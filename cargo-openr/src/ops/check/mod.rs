@@ -392,42 +392,17 @@ fn check_connections(
             };
             connected.insert(subject.clone());
             connected.insert(observer.clone());
-            let (ks, ko) = (kind(subject), kind(observer));
-            let mut malformed = false;
-            for name in [subject, observer] {
-                if kind(name).is_none() {
-                    malformed = true;
+            let Some(diags) = check_line(subject, observer, services, unknown_help) else {
+                for name in [subject, observer].into_iter().filter(|n| kind(n).is_none()) {
                     report.push(at(Diagnostic::error("E0004", format!("`{name}` is not a service name"))
                         .help("a service name has four parts, `Object.SubName.DataName.S` (subject) or `.O` (observer), written without quotes")));
                 }
-            }
-            if malformed {
                 continue;
+            };
+            for d in diags {
+                report.push(at(d));
             }
-            if ks == Some('O') && ko == Some('S') {
-                report.push(at(
-                    Diagnostic::error("E0005", "subject and observer are swapped").help(format!("the subject (`.S`) comes first: `{observer} {subject}`"))
-                ));
-            } else if ks != Some('S') {
-                report.push(at(Diagnostic::error("E0005", format!("`{subject}` is an observer, but the first name of a connection must be a subject (`.S`)"))));
-            } else if ko != Some('O') {
-                report
-                    .push(at(Diagnostic::error("E0005", format!("`{observer}` is a subject, but the second name of a connection must be an observer (`.O`)"))));
-            }
-            if data_name(subject) != data_name(observer) {
-                report.push(at(Diagnostic::error(
-                    "E0006",
-                    format!("DataName differs: `{}` (subject) vs `{}` (observer)", data_name(subject), data_name(observer)),
-                )
-                .help("both ends of a connection must carry the same data type; the third parts of the names must be identical")));
-            }
-            for name in [subject, observer] {
-                if !services.contains_key(name.as_str()) && !SYSTEM_SERVICES.contains(&name.as_str()) {
-                    let help = unknown_help(name).unwrap_or_else(|| suggest(name, services));
-                    let what = if help.contains("gateway") { "neither an object nor the gateway registers it" } else { "no object registers it" };
-                    report.push(at(Diagnostic::error("E0007", format!("unknown service `{name}`: {what}")).help(help)));
-                }
-            }
+            let (ks, ko) = (kind(subject), kind(observer));
             let (a, b) = if ks == Some('O') && ko == Some('S') { (observer, subject) } else { (subject, observer) };
             if let Some((_, _, first)) = seen.iter().find(|(s, o, _)| s == a && o == b) {
                 let message = format!("duplicate connection `{a} {b}` (first on line {first})");
@@ -446,15 +421,54 @@ fn check_connections(
             }
         }
     }
+    if let Some(cfg) = &cfg {
+        report_shared_gateway_services(&gateway_uses, &shown(&cfg.path), report);
+    }
+    report_unconnected(services, &connected, report);
+}
+
+/// A well-formed connection line's problems: swapped or wrong kinds, a DataName that
+/// differs, services nobody registers. None when a name is not a service name at all.
+fn check_line(subject: &str, observer: &str, services: &BTreeMap<String, Origin>, unknown_help: &dyn Fn(&str) -> Option<String>) -> Option<Vec<Diagnostic>> {
+    let (ks, ko) = (kind(subject)?, kind(observer)?);
+    let mut out = Vec::new();
+    if ks == 'O' && ko == 'S' {
+        out.push(Diagnostic::error("E0005", "subject and observer are swapped").help(format!("the subject (`.S`) comes first: `{observer} {subject}`")));
+    } else if ks != 'S' {
+        out.push(Diagnostic::error("E0005", format!("`{subject}` is an observer, but the first name of a connection must be a subject (`.S`)")));
+    } else if ko != 'O' {
+        out.push(Diagnostic::error("E0005", format!("`{observer}` is a subject, but the second name of a connection must be an observer (`.O`)")));
+    }
+    if data_name(subject) != data_name(observer) {
+        out.push(
+            Diagnostic::error("E0006", format!("DataName differs: `{}` (subject) vs `{}` (observer)", data_name(subject), data_name(observer)))
+                .help("both ends of a connection must carry the same data type; the third parts of the names must be identical"),
+        );
+    }
+    for name in [subject, observer] {
+        if !services.contains_key(name) && !SYSTEM_SERVICES.contains(&name) {
+            let help = unknown_help(name).unwrap_or_else(|| suggest(name, services));
+            let what = if help.contains("gateway") { "neither an object nor the gateway registers it" } else { "no object registers it" };
+            out.push(Diagnostic::error("E0007", format!("unknown service `{name}`: {what}")).help(help));
+        }
+    }
+    Some(out)
+}
+
+/// W0003 for each gateway service in more than one connection.
+fn report_shared_gateway_services(gateway_uses: &HashMap<String, Vec<usize>>, file: &Path, report: &mut Report) {
     for (name, uses) in gateway_uses.iter().filter(|(_, uses)| uses.len() > 1) {
-        let Some(cfg) = &cfg else { break };
         let lines: Vec<String> = uses.iter().map(usize::to_string).collect();
         report.push(
             Diagnostic::warning("W0003", format!("gateway service `{name}` is in {} connections (lines {})", uses.len(), lines.join(", ")))
-                .at(shown(&cfg.path), Some(uses[0]))
+                .at(file, Some(uses[0]))
                 .help("one gateway channel carries one subject-observer connection: give each connection a service and port of its own (Sony's ObjectComm-multi RP2, not RP2-BAD)"),
         );
     }
+}
+
+/// W0002 for each registered service no connection names (a dummy's DataName excepted).
+fn report_unconnected(services: &BTreeMap<String, Origin>, connected: &HashSet<String>, report: &mut Report) {
     for (name, origin) in services {
         if data_name(name) == DO_NOT_CONNECT || connected.contains(name) {
             continue;
