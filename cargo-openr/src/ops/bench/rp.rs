@@ -58,6 +58,17 @@ pub fn rp(exe: &Path, root: &Path, pingpong: &Path, work: &Path, tab: &mut Table
     Ok(())
 }
 
+/// A gateway CFG line with its port (second field) set to `port`; comments and lines
+/// without a port stay as they are.
+fn with_port(line: &str, port: u16) -> String {
+    let mut f: Vec<String> = line.split_whitespace().map(str::to_string).collect();
+    if line.starts_with('#') || f.len() < 2 {
+        return line.to_string();
+    }
+    f[1] = port.to_string();
+    f.join(" ")
+}
+
 /// Ping on the robot (`RP/robot/MS`, it shuts the robot down when done), Pong on the host
 /// (`RP/host/MS`, stopped then); their gateways' port moved to a free one.
 fn split_run(exe: &Path, root: &Path, dir: &Path, work: &Path) -> Result<RoundTrip> {
@@ -65,8 +76,8 @@ fn split_run(exe: &Path, root: &Path, dir: &Path, work: &Path) -> Result<RoundTr
     let port = TcpListener::bind("127.0.0.1:0")?.local_addr()?.port();
     for f in [robot_ms.join("OPEN-R/MW/CONF/ROBOTGW.CFG"), host_ms.join("OPEN-R/MW/CONF/HOSTGW.CFG")] {
         let text = std::fs::read_to_string(&f).with_context(|| format!("cannot read {}", f.display()))?;
-        let moved: String =
-            text.lines().map(|l| if l.starts_with('#') { format!("{l}\n") } else { format!("{}\n", l.replace("59002", &port.to_string())) }).collect();
+        // The port is a line's second field, whatever an earlier round set it to.
+        let moved: String = text.lines().map(|l| format!("{}\n", with_port(l, port))).collect();
         std::fs::write(&f, moved)?;
     }
     let robot = Command::new(exe)
@@ -140,6 +151,14 @@ pub fn raw_tcp_ping_pong(rounds: usize) -> Result<RoundTrip> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_round_moves_the_gateway_port_again() {
+        let first = with_port("TCPGateway.Ball.int.S 59002 127.0.0.1", 40001);
+        assert_eq!(first, "TCPGateway.Ball.int.S 40001 127.0.0.1");
+        assert_eq!(with_port(&first, 40002), "TCPGateway.Ball.int.S 40002 127.0.0.1", "a moved port moves again");
+        assert_eq!(with_port("# port 59002", 40003), "# port 59002");
+    }
 
     #[test]
     fn pingpong_line_gives_microseconds_and_rate() {
