@@ -247,20 +247,56 @@ fn page_shows_the_camera_picture() {
     assert!(attr_of_id(&dom, "camera", "src").starts_with("/camera.png"), "the page loads the picture");
 }
 
+/// A loopback proxy in front of the view server that steps the paused run by
+/// `frames` just before it forwards the page's first `/state` poll: the poll then
+/// must see a later moment than the page was served with, whatever the machine's speed.
+fn step_before_first_poll(upstream: String, frames: u32) -> String {
+    use std::net::{Shutdown, TcpListener};
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::Arc;
+    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+    let addr = listener.local_addr().unwrap().to_string();
+    let stepped = Arc::new(AtomicBool::new(false));
+    std::thread::spawn(move || {
+        for client in listener.incoming().flatten() {
+            let (upstream, stepped) = (upstream.clone(), stepped.clone());
+            std::thread::spawn(move || {
+                let Ok(server) = TcpStream::connect(&upstream) else { return };
+                let (mut from_client, mut to_server) = (client.try_clone().unwrap(), server.try_clone().unwrap());
+                let (mut from_server, mut to_client) = (server, client);
+                std::thread::spawn(move || {
+                    let _ = std::io::copy(&mut from_server, &mut to_client);
+                    let _ = to_client.shutdown(Shutdown::Both);
+                });
+                let mut buf = [0; 16384];
+                while let Ok(n @ 1..) = from_client.read(&mut buf) {
+                    if buf[..n].starts_with(b"GET /state") && !stepped.swap(true, Ordering::SeqCst) {
+                        control(&upstream, &format!("step {frames}"));
+                    }
+                    if to_server.write_all(&buf[..n]).is_err() {
+                        break;
+                    }
+                }
+                let _ = to_server.shutdown(Shutdown::Write);
+            });
+        }
+    });
+    addr
+}
+
 #[test]
 fn page_follows_the_run() {
     let p = build("movelegs");
-    // At --speed max virtual time runs far ahead between the page's load and its first
-    // poll, however busy the machine.
     let mut run = spawn_ms(&p.ms(), &["--view", "--speed", "max"], &[]);
     let addr = view_addr(&mut run);
-    pause_after(&addr, 200);
-    control(&addr, "resume");
-    // The page as served carries the state of the moment; its polling draws newer ones.
-    let dom = chromium_with(&format!("http://{addr}/"), None, &["--virtual-time-budget=3000"]);
+    let paused = pause_after(&addr, 200);
+    // The page as served carries the paused moment; its polling draws the newer one.
+    let proxy = step_before_first_poll(addr, 30);
+    let dom = chromium_with(&format!("http://{proxy}/"), None, &["--virtual-time-budget=3000"]);
     let _ = run.stop();
     let inlined = dom.split("const INITIAL = ").nth(1).and_then(|r| r.split("\"t_ms\":").nth(1)).expect("the inlined snapshot");
     let initial: u64 = inlined.split(|c: char| !c.is_ascii_digit()).next().unwrap().parse().unwrap();
+    assert_eq!(initial, paused, "the page was served with the paused moment");
     let shown: u64 = text_of_id(&dom, "t_ms").parse().unwrap();
     assert!(shown > initial, "the page drew a later state than the one it was served with ({shown} ms vs {initial} ms)");
 }
