@@ -108,7 +108,9 @@ fn the_stick_still_works_through_inner_links_and_own_threads() {
 #[test]
 fn the_runtime_exports_every_interposer() {
     let exe = Path::new(crate::support::exe());
-    let missing = openr_wrappers::mkbin::missing_dynamic_symbols(exe, sdk_runtime::interpose::SYMBOLS).unwrap();
+    let interposers = [sdk_runtime::interpose::SYMBOLS, sdk_runtime::interpose::PROCESS_SYMBOLS, sdk_runtime::interpose::PROCESS_SYMBOLS7].concat();
+    assert!(interposers.contains(&"posix_spawn") && interposers.contains(&"dlopen"), "{interposers:?}");
+    let missing = openr_wrappers::mkbin::missing_dynamic_symbols(exe, &interposers).unwrap();
     assert!(missing.is_empty(), "not in the dynamic symbol table of cargo-openr: {missing:?}");
 }
 
@@ -200,4 +202,56 @@ fn loading_through_files_needs_a_usable_tmpdir_and_says_so() {
     // From memory (the default) no directory is needed at all.
     let (code, err) = run_with_tmpdir(&p.ms(), &missing, false);
     assert_eq!(code, Some(0), "{err}");
+}
+
+// ---- processes, signals and the loader (issue 18: no way to the host) ----
+
+/// What `testdata/programs/hostcalls` tries, from its object and from a thread it starts.
+const HOST_CALLS: &[(&str, &str)] = &[
+    ("system(cmd)", "ENOSYS"),
+    ("popen(cmd)", "ENOSYS"),
+    ("fork()", "ENOSYS"),
+    ("posix_spawn(/bin/sh)", "ENOSYS"),
+    ("posix_spawnp(sh)", "ENOSYS"),
+    ("kill(parent, 0)", "ENOSYS"),
+    ("ptrace(PEEKDATA, parent)", "ENOSYS"),
+    ("dlopen(libc.so.6)", "ENOSYS"),
+    ("execve(/bin/sh)", "ENOSYS"),
+    ("execv(/bin/sh)", "ENOSYS"),
+    ("execvp(sh)", "ENOSYS"),
+    ("execl(/bin/sh)", "ENOSYS"),
+    ("execlp(sh)", "ENOSYS"),
+];
+
+#[test]
+fn objects_start_no_host_process_signal_none_and_load_no_library() {
+    let p = build("hostcalls");
+    let outside = tempfile::tempdir().unwrap();
+    fs::write(p.ms().join("OPEN-R/MW/CONF/HOSTCALL.CFG"), format!("{}\n", outside.path().display())).unwrap();
+    let out = run_ms(&p.ms(), &["--for", "1s", "--speed", "max"]);
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stdout.contains("HostCalls : done"), "{}", out.stdout);
+    let lines = out.lines_starting("HostCalls : ");
+    let mut wrong = Vec::new();
+    for who in ["", "own thread: "] {
+        for (call, errno) in HOST_CALLS {
+            let line = lines.iter().find(|l| l["HostCalls : ".len()..].strip_prefix(who).is_some_and(|r| r.starts_with(call)));
+            let want = format!("refused ({errno})");
+            match line {
+                Some(l) if l.ends_with(&want) => {}
+                other => wrong.push(format!("{who}{call}: want {want}, got {other:?}")),
+            }
+        }
+        let why = format!("HostCalls : {who}dlerror: dlopen: OPEN-R objects cannot load libraries");
+        assert!(out.stdout.contains(&why), "{who}: dlerror says why\n{}", out.stdout);
+    }
+    assert!(wrong.is_empty(), "calls not refused:\n  {}\n\nstdout:\n{}", wrong.join("\n  "), out.stdout);
+    assert!(out.stdout.contains("HostCalls : system(NULL) = 0"), "no shell on the robot\n{}", out.stdout);
+    let made: Vec<_> = fs::read_dir(outside.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert!(made.is_empty(), "host commands ran: {made:?}");
+    // One warning per call, naming the object (the thread's calls are not repeated).
+    for call in ["system", "popen", "fork", "posix_spawn", "kill", "dlopen", "execve", "execl"] {
+        let warning = format!("warning: object `hostcall` called {call}(), which the robot does not have");
+        assert_eq!(out.stderr.matches(&warning).count(), 1, "{warning}\n{}", out.stderr);
+    }
 }

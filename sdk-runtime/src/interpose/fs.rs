@@ -7,45 +7,14 @@
 
 use std::ffi::{c_char, c_int, c_uint, c_void};
 use std::ptr::null_mut;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
+use super::real::fail;
 use super::trampoline::trampolines;
 use super::{host_to_ms, is_objects, map, set_errno, Mapped};
 use crate::ms::Access;
 
 type C = *const c_char;
 type P = *mut c_void;
-
-/// libc's own function `$name` (the next definition after the executable's), if any.
-macro_rules! real {
-    ($name:literal, $ty:ty) => {{
-        static PTR: AtomicUsize = AtomicUsize::new(0);
-        let mut p = PTR.load(Ordering::Relaxed);
-        if p == 0 {
-            // SAFETY: a NUL-terminated name.
-            p = unsafe { libc::dlsym(libc::RTLD_NEXT, concat!($name, "\0").as_ptr().cast()) } as usize;
-            PTR.store(p, Ordering::Relaxed);
-        }
-        // SAFETY: glibc's function of that name has this type.
-        (p != 0).then(|| unsafe { std::mem::transmute::<usize, $ty>(p) })
-    }};
-}
-
-/// Calls libc's `$name` with `$args`, or fails with ENOSYS when this libc lacks it.
-macro_rules! call {
-    ($name:literal, $fail:expr, fn($($t:ty),*) -> $r:ty, $($args:expr),*) => {
-        match real!($name, unsafe extern "C" fn($($t),*) -> $r) {
-            // SAFETY: the arguments the caller gave, with a mapped path.
-            Some(f) => unsafe { f($($args),*) },
-            None => fail(libc::ENOSYS, $fail),
-        }
-    };
-}
-
-fn fail<R>(errno: i32, value: R) -> R {
-    set_errno(errno);
-    value
-}
 
 /// `call(path)` with `path` mapped for an object's call, or `fail` with its errno.
 unsafe fn with<R>(caller: usize, path: C, access: Access, failed: R, call: impl FnOnce(C) -> R) -> R {

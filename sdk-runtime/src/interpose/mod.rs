@@ -23,11 +23,15 @@ use std::sync::OnceLock;
 use crate::ms::Access;
 use crate::runtime::Runtime;
 
+#[macro_use]
+mod real;
 mod dirs;
 mod fs;
+mod process;
 mod trampoline;
 
 pub use fs::SYMBOLS;
+pub use process::{SYMBOLS as PROCESS_SYMBOLS, SYMBOLS7 as PROCESS_SYMBOLS7};
 
 /// The executable's address range: calls from there are the runtime's.
 fn exe_range() -> (usize, usize) {
@@ -167,5 +171,5 @@ pub(crate) fn set_errno(e: i32) {
 pub fn keep() -> usize {
     exe_range();
     sanitizer_ranges();
-    fs::keep()
+    fs::keep() ^ process::keep()
 }
