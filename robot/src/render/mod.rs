@@ -389,7 +389,22 @@ fn cross(a: Vec3, b: Vec3) -> Vec3 {
 }
 
 fn shade(rgb: [u8; 3], k: f64) -> [u8; 3] {
-    rgb.map(|c| (c as f64 * k).round().clamp(0.0, 255.0) as u8)
+    rgb.map(|c| round_byte(c as f64 * k))
+}
+
+/// `x.round().clamp(0.0, 255.0) as u8` without libm's `round` (a call on baseline
+/// x86-64, ~3 % of an image): for 0 ≤ x < 2³², x − ⌊x⌋ is exact, so comparing it with
+/// ½ rounds half away from zero exactly as `round` does.
+#[inline(always)]
+fn round_byte(x: f64) -> u8 {
+    if !(x > 0.0) {
+        return 0; // negative, zero or NaN
+    }
+    if x >= 255.0 {
+        return 255;
+    }
+    let t = x as u32;
+    (t + (x - t as f64 >= 0.5) as u32) as u8
 }
 
 #[cfg(test)]
@@ -401,6 +416,15 @@ mod tests {
         let mut b = Body::new(RobotModel::new(Design::Ers7));
         b.set_posture_deg(&POSTURE_PARTS, posture);
         b
+    }
+
+    #[test]
+    fn round_byte_is_round_then_clamp() {
+        let mut xs = vec![-1.0, -0.5, 0.0, 0.49999999999999994, 0.5, 1.5, 2.5, 254.49999999999997, 254.5, 255.0, 300.0, f64::NAN];
+        xs.extend((0..=2_600_000).map(|i| i as f64 * 1e-4));
+        for x in xs {
+            assert_eq!(round_byte(x), x.round().clamp(0.0, 255.0) as u8, "{x}");
+        }
     }
 
     #[test]
