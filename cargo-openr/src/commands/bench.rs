@@ -16,7 +16,8 @@ pub struct Args {
     /// How many times each benchmark runs (min / median / max are reported)
     #[arg(long, value_name = "N", default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=100))]
     runs: u32,
-    /// Rewrite the part of FILE between the bench markers with this run's table
+    /// Rewrite the part of FILE between the bench markers with this run's table (with
+    /// `--only`: only the rows of the figures measured, the others kept)
     #[arg(long, value_name = "FILE")]
     readme: Option<PathBuf>,
     /// Measure only these groups of figures (comma-separated; default: all)
@@ -47,7 +48,15 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let table = stats::markdown(&report.table);
     shell.out(&table);
     if let Some((path, text)) = readme {
-        let body = format!("{}, {} run(s) of each figure:\n\n{table}", machine_and_date(), runs);
+        let body = match stats::section(&text).filter(|_| !args.only.is_empty()) {
+            // A partial run keeps the rows it did not measure.
+            Some(old) => {
+                let groups: Vec<String> = args.only.iter().map(|g| format!("{g:?}").to_lowercase()).collect();
+                let note = format!("The rows of `--only {}`: {}, {} run(s) of each figure.", groups.join(","), machine_and_date(), runs);
+                stats::merge_rows(old, &table, &note)
+            }
+            None => format!("{}, {} run(s) of each figure:\n\n{table}", machine_and_date(), runs),
+        };
         let new = stats::replace_section(&text, &body).context("bench markers")?;
         openr_wrappers::install::write_atomic(path, new.as_bytes())?;
         shell.status("Wrote", &path.display().to_string());

@@ -132,12 +132,60 @@ pub fn replace_section(text: &str, body: &str) -> Option<String> {
     Some(format!("{}{BEGIN}\n{body}{}", &text[..b], &text[e..]))
 }
 
+/// The text between the markers of `text`, if they are there in order.
+pub fn section(text: &str) -> Option<&str> {
+    let b = text.find(BEGIN)? + BEGIN.len();
+    let e = text[b..].find(END)? + b;
+    Some(text[b..e].trim_start_matches('\n'))
+}
+
+/// A partial run (`--only`) written into an existing section: each row of `table` (as
+/// [`markdown`] makes it) takes the place of the old row of the same figure, rows of
+/// figures the old table lacks follow its last row, every other row and line stays; `note`
+/// (what was measured again, when) is added after the table.
+pub fn merge_rows(old: &str, table: &str, note: &str) -> String {
+    let key = |line: &str| line.strip_prefix("| ").and_then(|r| r.split(" | ").next()).map(str::to_string);
+    let fresh: Vec<(String, &str)> = table.lines().skip(2).filter_map(|l| Some((key(l)?, l))).collect();
+    let mut used = vec![false; fresh.len()];
+    let mut out: Vec<String> = Vec::new();
+    let mut last_row = None;
+    for line in old.lines() {
+        let replaced = key(line).and_then(|k| fresh.iter().position(|(f, _)| *f == k));
+        if let Some(i) = replaced {
+            used[i] = true;
+            out.push(fresh[i].1.to_string());
+        } else {
+            out.push(line.to_string());
+        }
+        if line.starts_with('|') {
+            last_row = Some(out.len());
+        }
+    }
+    let at = last_row.unwrap_or(out.len());
+    let added: Vec<String> = fresh.iter().zip(&used).filter(|(_, u)| !**u).map(|((_, l), _)| l.to_string()).collect();
+    out.splice(at..at, added);
+    let at = last_row.map_or(out.len(), |r| r + fresh.len() - used.iter().filter(|u| **u).count());
+    out.splice(at..at, [String::new(), note.to_string()]);
+    out.join("\n") + "\n"
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn t(robots: usize, late_pct: f64, lag_s: f64) -> Trial {
         Trial { robots, late_pct, lag_s }
+    }
+
+    #[test]
+    fn a_partial_run_replaces_its_rows_and_keeps_the_others() {
+        let old = "Measured 2026-12-01:\n\n| what | min |\n|---|---:|\n| a | 1 |\n| b | 2 |\n| c | 3 |\n\nLoaded machine.\n";
+        let new = "| what | min |\n|---|---:|\n| b | 20 |\n| d | 40 |\n";
+        let merged = merge_rows(old, new, "b, d: again on 2026-12-02.");
+        assert_eq!(merged, "Measured 2026-12-01:\n\n| what | min |\n|---|---:|\n| a | 1 |\n| b | 20 |\n| c | 3 |\n| d | 40 |\n\nb, d: again on 2026-12-02.\n\nLoaded machine.\n");
+        let text = format!("x\n{BEGIN}\n{old}{END}\ny\n");
+        assert_eq!(section(&text), Some(old));
+        assert_eq!(section("no markers"), None);
     }
 
     #[test]
