@@ -417,3 +417,21 @@ unsafe fn dispatch_inner<T: Object>(sel: u32, msg: *mut c_void) {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// SetBufCtrlParam refuses what the robot refuses and then keeps the old values.
+    #[test]
+    fn set_buf_ctrl_param_refuses_dmax_below_dmin_and_dmin_zero() {
+        let mut ctx = Context::new(); // no runtime: registering is a no-op
+        let o = ctx.observer::<[u8]>("Test.Data.char.O");
+        let default = ctx.observers[0].buf;
+        assert_eq!(o.set_buf_ctrl_param(&mut ctx, 0, 4, 3), Status::Fail, "dmax < dmin");
+        assert_eq!(o.set_buf_ctrl_param(&mut ctx, 0, 0, 3), Status::Fail, "dmin 0");
+        assert_eq!(ctx.observers[0].buf, default, "a refusal changes nothing");
+        assert_eq!(o.set_buf_ctrl_param(&mut ctx, 1, 2, 2), Status::Success);
+        assert_eq!(ctx.observers[0].buf, (1, 2, 2));
+    }
+}
