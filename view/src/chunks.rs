@@ -22,9 +22,7 @@ fn param<T: std::str::FromStr>(query: &str, name: &str) -> Option<T> {
 
 /// Chunk `c` of robot `k`'s moments; in a world, each with `truth`.
 fn chunk(rec: &Replay, k: usize, c: usize) -> Option<Value> {
-    let states = &rec.robots.get(k)?.states;
-    let from = c.checked_mul(CHUNK).filter(|f| *f < states.len())?;
-    let part = &states[from..(from + CHUNK).min(states.len())];
+    let part = rec.robots.get(k)?.moments.chunk(c)?;
     Some(Value::Array(
         part.iter()
             .map(|s| {
@@ -45,17 +43,17 @@ fn index(rec: &Replay, k: usize, query: &str) -> Value {
         .iter()
         .map(|r| {
             json!({
-                "design": r.design, "count": r.states.len(),
-                "starts": r.states.iter().step_by(CHUNK).map(|s| s["t_ms"].clone()).collect::<Vec<_>>(),
-                "end": r.states.last().map_or(Value::Null, |s| s["t_ms"].clone()),
+                "design": r.design, "count": r.moments.len(),
+                "starts": (0..r.moments.len()).step_by(CHUNK).filter_map(|i| r.moments.t_ms(i)).collect::<Vec<_>>(),
+                "end": r.moments.len().checked_sub(1).and_then(|i| r.moments.t_ms(i)),
                 "pictures": r.pictures.len(), "speaker": r.speaker.is_some(),
             })
         })
         .collect();
-    let states = &rec.robots[k].states;
-    let at = param::<u64>(query, "t").map_or(0, |t| states.partition_point(|s| s["t_ms"].as_u64().unwrap_or(0) <= t).saturating_sub(1));
+    let moments = &rec.robots[k].moments;
+    let at = param::<u64>(query, "t").map_or(0, |t| moments.count_to(t).saturating_sub(1));
     let (back, step) = (param::<usize>(query, "back").unwrap_or(0), param::<usize>(query, "step").unwrap_or(0));
-    let (lo, hi) = (at.saturating_sub(back + 1) / CHUNK, (at + step + 1).min(states.len().saturating_sub(1)) / CHUNK);
+    let (lo, hi) = (at.saturating_sub(back + 1) / CHUNK, (at + step + 1).min(moments.len().saturating_sub(1)) / CHUNK);
     let loaded: serde_json::Map<String, Value> = (lo..=hi).filter_map(|c| Some((c.to_string(), chunk(rec, k, c)?))).collect();
     json!({
         "source": rec.source.display().to_string(), "chunk": CHUNK, "robot": k, "robots": robots,

@@ -8,11 +8,13 @@
 //! trace goes without.
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
 
 use sdk_runtime::robot::model::{Design, Leg, Part, PrimitiveKind};
 use sdk_runtime::robot::VirtualRobot;
 use serde_json::{json, Value};
 
+use crate::chunks::CHUNK;
 use crate::record::{CAMERA_INDEX, FORMAT, MANIFEST, TRACE, VERSION};
 
 /// What `cargo openr view PATH` serves: one robot's recording, or a simulated world's
@@ -45,8 +47,8 @@ pub struct Recording {
     /// What was opened (a directory or a trace file).
     pub source: PathBuf,
     pub design: &'static str,
-    /// Snapshots in time order.
-    pub states: Vec<Value>,
+    /// Its moments in time order, each built when the page first asks for it.
+    pub moments: Moments,
     /// Camera picture n (1-based) is `pictures[n - 1]`, taken at `picture_times[n - 1]`.
     pub pictures: Vec<PathBuf>,
     pub picture_times: Vec<u64>,
@@ -113,7 +115,7 @@ fn open_robot(path: &Path) -> Res<Recording> {
         return Ok(Recording {
             source: path.into(),
             design: design.name(),
-            states: states(design, &records, &[], &[]),
+            moments: Moments::new(design, records, Vec::new(), Vec::new()),
             pictures: Vec::new(),
             picture_times: Vec::new(),
             speaker: None,
@@ -138,7 +140,7 @@ fn open_robot(path: &Path) -> Res<Recording> {
     Ok(Recording {
         source: path.into(),
         design: design.name(),
-        states: states(design, &records, &times, &views),
+        moments: Moments::new(design, records, times.clone(), views),
         pictures: camera.into_iter().map(|c| c.1).collect(),
         picture_times: times,
         speaker,
@@ -256,7 +258,7 @@ fn read_lines(path: &Path, key: &str, what: &str) -> Res<Vec<Value>> {
 }
 
 /// What the trace says about the robot so far.
-#[derive(Default)]
+#[derive(Clone, Default)]
 struct Now {
     joints: HashMap<String, f64>,
     leds: HashMap<String, (u64, u64)>,
@@ -267,25 +269,96 @@ struct Now {
     accel: [f64; 3],
 }
 
-/// One snapshot per virtual time with records; `pictures` are the camera's times,
-/// `views` the records of `view.jsonl`.
-fn states(design: Design, records: &[Value], pictures: &[u64], views: &[Value]) -> Vec<Value> {
-    let robot = VirtualRobot::new(design);
-    let prims = robot.model().primitives();
-    let mut now = Now::default();
-    let mut out = Vec::new();
-    for (i, r) in records.iter().enumerate() {
-        now.apply(r);
-        let t = r["t_ms"].as_u64().unwrap_or(0);
-        if records.get(i + 1).is_some_and(|n| n["t_ms"].as_u64() == Some(t)) {
-            continue; // the moment's other records first
+/// A recording's moments: one per virtual time at which the trace has records. Opening
+/// one only finds where each moment ends in the trace and keeps the state at the start
+/// of every chunk of [`CHUNK`] moments; a chunk's snapshots are built from there when
+/// first asked for, and the last few chunks built are kept. So a long recording opens
+/// quickly and takes the memory of its trace, not of every snapshot.
+pub struct Moments {
+    design: Design,
+    records: Vec<Value>,
+    /// The camera's picture times and `view.jsonl`'s records.
+    pictures: Vec<u64>,
+    views: Vec<Value>,
+    /// Per moment: its time, frame and the index after its last record.
+    ends: Vec<(u64, u64, usize)>,
+    /// The state before the first record of each chunk's first moment.
+    starts: Vec<Now>,
+    built: Mutex<Vec<(usize, Arc<Vec<Value>>)>>,
+}
+
+/// Chunks kept built (the page looks around one moment at a time).
+const KEEP: usize = 16;
+
+impl Moments {
+    fn new(design: Design, records: Vec<Value>, pictures: Vec<u64>, views: Vec<Value>) -> Moments {
+        let (mut now, mut ends, mut starts) = (Now::default(), Vec::new(), Vec::new());
+        let mut begin = 0;
+        for (i, r) in records.iter().enumerate() {
+            let t = r["t_ms"].as_u64().unwrap_or(0);
+            if records.get(i + 1).is_some_and(|n| n["t_ms"].as_u64() == Some(t)) {
+                continue; // the moment's other records first
+            }
+            if ends.len() % CHUNK == 0 {
+                starts.push(now.clone());
+            }
+            for r in &records[begin..=i] {
+                now.apply(r);
+            }
+            begin = i + 1;
+            ends.push((t, r["frame"].as_u64().unwrap_or(0), begin));
         }
-        let frame = r["frame"].as_u64().unwrap_or(0);
-        let camera_images = pictures.partition_point(|&p| p <= t);
-        let view = views.partition_point(|v| v["t_ms"].as_u64().unwrap_or(0) <= t).checked_sub(1).map(|k| &views[k]);
-        out.push(now.snapshot(design, prims, (t, frame, camera_images), view));
+        Moments { design, records, pictures, views, ends, starts, built: Mutex::new(Vec::new()) }
     }
-    out
+
+    pub fn len(&self) -> usize {
+        self.ends.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.ends.is_empty()
+    }
+
+    /// The virtual time of moment `i`.
+    pub fn t_ms(&self, i: usize) -> Option<u64> {
+        self.ends.get(i).map(|e| e.0)
+    }
+
+    /// The number of moments at or before `t_ms`.
+    pub fn count_to(&self, t_ms: u64) -> usize {
+        self.ends.partition_point(|e| e.0 <= t_ms)
+    }
+
+    /// The snapshots of chunk `c` (moments c × CHUNK …), or None past the end.
+    pub fn chunk(&self, c: usize) -> Option<Arc<Vec<Value>>> {
+        let mut built = self.built.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(k) = built.iter().position(|(n, _)| *n == c) {
+            let hit = built.remove(k);
+            built.push(hit.clone());
+            return Some(hit.1);
+        }
+        let first = c.checked_mul(CHUNK).filter(|f| *f < self.ends.len())?;
+        let robot = VirtualRobot::new(self.design);
+        let prims = robot.model().primitives();
+        let mut now = self.starts[c].clone();
+        let mut begin = first.checked_sub(1).map_or(0, |p| self.ends[p].2);
+        let mut out = Vec::with_capacity(CHUNK);
+        for &(t, frame, end) in &self.ends[first..(first + CHUNK).min(self.ends.len())] {
+            for r in &self.records[begin..end] {
+                now.apply(r);
+            }
+            begin = end;
+            let camera_images = self.pictures.partition_point(|&p| p <= t);
+            let view = self.views.partition_point(|v| v["t_ms"].as_u64().unwrap_or(0) <= t).checked_sub(1).map(|k| &self.views[k]);
+            out.push(now.snapshot(self.design, prims, (t, frame, camera_images), view));
+        }
+        let out = Arc::new(out);
+        if built.len() == KEEP {
+            built.remove(0);
+        }
+        built.push((c, out.clone()));
+        Some(out)
+    }
 }
 
 impl Now {
@@ -374,5 +447,53 @@ impl Now {
             "joints": joints, "leds": leds, "ears": ears, "sensors": sensors, "battery": battery,
             "objects": objects, "connections": connections,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A trace of `n` sensor moments 32 ms apart; an LED set at moment 3 (with a second
+    /// record of the same moment).
+    fn locator(kind: PrimitiveKind) -> &'static str {
+        VirtualRobot::new(Design::Ers7).model().primitives().iter().find(|p| p.kind == kind).unwrap().locator
+    }
+
+    fn trace(n: u64) -> Vec<Value> {
+        let (joint, led) = (locator(PrimitiveKind::Joint2), locator(PrimitiveKind::Led2));
+        let mut records = Vec::new();
+        for k in 0..n {
+            records.push(json!({ "kind": "sensor", "t_ms": 32 * k, "frame": 4 * k, "joints": { joint: k as f64 } }));
+            if k == 3 {
+                records.push(json!({ "kind": "led", "t_ms": 32 * k, "frame": 4 * k, "locator": led, "on": true }));
+            }
+        }
+        records
+    }
+
+    fn joint(s: &Value, loc: &str) -> Value {
+        s["joints"].as_array().unwrap().iter().find(|j| j["locator"] == loc).unwrap()["deg"].clone()
+    }
+
+    #[test]
+    fn a_chunk_built_late_carries_the_state_of_every_earlier_record() {
+        let m = Moments::new(Design::Ers7, trace(3 * CHUNK as u64 + 5), Vec::new(), Vec::new());
+        assert_eq!(m.len(), 3 * CHUNK + 5, "one moment per time, the LED's record joins moment 3");
+        assert_eq!((m.t_ms(CHUNK), m.count_to(32 * 10)), (Some(32 * CHUNK as u64), 11));
+        // chunk 2 first: its state comes from the kept start, not from building 0 and 1
+        let c2 = m.chunk(2).unwrap();
+        let first = &c2[0];
+        assert_eq!(first["t_ms"], 32 * 2 * CHUNK as u64);
+        assert_eq!(joint(first, locator(PrimitiveKind::Joint2)), 2.0 * CHUNK as f64);
+        let led = first["leds"].as_array().unwrap().iter().find(|l| l["locator"] == locator(PrimitiveKind::Led2)).unwrap().clone();
+        assert_eq!(led["value"], 255, "set at moment 3, still on in chunk 2");
+        assert_eq!(m.chunk(3).unwrap().len(), 5);
+        assert!(m.chunk(4).is_none());
+        // and moment 2 (before the LED) agrees with chunk 0 built afterwards
+        let c0 = m.chunk(0).unwrap();
+        let off = c0[2]["leds"].as_array().unwrap().iter().find(|l| l["locator"] == locator(PrimitiveKind::Led2)).unwrap()["value"].clone();
+        assert_eq!(off, 0);
+        assert!(Arc::ptr_eq(&c2, &m.chunk(2).unwrap()), "a chunk is built once while kept");
     }
 }

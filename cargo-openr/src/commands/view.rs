@@ -20,8 +20,8 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         .robots
         .iter()
         .map(|r| {
-            let end = r.states.last().map_or(0, |s| s["t_ms"].as_u64().unwrap_or(0));
-            format!("{} moments to {end} ms, {} camera pictures{}", r.states.len(), r.pictures.len(), if r.speaker.is_some() { ", sound" } else { "" })
+            let end = r.moments.len().checked_sub(1).and_then(|i| r.moments.t_ms(i)).unwrap_or(0);
+            format!("{} moments to {end} ms, {} camera pictures{}", r.moments.len(), r.pictures.len(), if r.speaker.is_some() { ", sound" } else { "" })
         })
         .collect();
     let what = match &rec.world {
