@@ -3,8 +3,8 @@
 use std::io::BufReader;
 use std::path::Path;
 
+use openr_peer_protocol::wire;
 use sdk_runtime::control::{self, Command, Input};
-use sdk_runtime::peer::wire;
 
 /// A stream of robot-protocol messages as a peer sends them: each message is read,
 /// refused or taken; what was taken prints back to the same bytes.
@@ -160,7 +160,7 @@ pub fn vectors(data: &[u8]) -> bool {
 /// readings name only the design's primitives, each of a role the peer holds; an
 /// IMAGE is accepted only with exactly its picture's bytes; CLOCK reads its flags.
 pub fn peer(data: &[u8]) -> bool {
-    use sdk_runtime::peer::{payload, wire};
+    use openr_peer_protocol::{payload, wire};
     use sdk_runtime::robot::model::RobotModel;
     use sdk_runtime::robot::Design;
     use std::sync::OnceLock;

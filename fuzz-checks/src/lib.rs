@@ -118,7 +118,7 @@ fn walk(dir: &Path, f: &mut dyn FnMut(&Path)) {
 }
 
 fn built_seeds(target: &str) -> Vec<Vec<u8>> {
-    use sdk_runtime::peer::wire;
+    use openr_peer_protocol::wire;
     let text = |v: &[&str]| v.iter().map(|s| s.as_bytes().to_vec()).collect();
     match target {
         "wlan" => text(&["# wireless\nESSID=AIBONET\r\nWEPENABLE=0\nIPADDRESS = 10.0.1.100 # robot\n=x\nbare line\n"]),

@@ -3,7 +3,7 @@
 use std::io::{self, Read, Write};
 
 // The payloads' integers and u16-length strings are the robot protocol's.
-pub use crate::peer::wire::{In, Out};
+pub use openr_peer_protocol::wire::{In, Out};
 
 pub const HELLO: u8 = 1;
 pub const DATA: u8 = 2;

@@ -1,16 +1,16 @@
-//! The numbers the Python peers copy from this crate, as one flat table, and the test that
-//! they agree. What a peer can learn from the WELCOME it is not given a copy of (the sensor
+//! The numbers the Python peers copy from this crate and the robot model, as one flat
+//! table, and the test that they agree. What a peer can learn from the WELCOME it is not given a copy of (the sensor
 //! value ranges and standard gains, revision 2); what it needs before or without one is
 //! copied: `tools/robot_peer.py` (the protocol codec, standard library only) keeps the
 //! protocol's constants ([`super::wire`]), and `sim/mujoco/bridge.py` the standard P gains
-//! and stand posture (`robot::model`) for robots that have no runtime. The test reads
+//! and stand posture (`openr_robot::model`) for robots that have no runtime. The test reads
 //! theirs with python3 and fails on any difference, whichever side changed.
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command;
 
-use super::wire::*;
-use crate::robot::model::{Design, PrimitiveKind, RobotModel, POSTURE_PARTS, POSTURE_STAND};
+use crate::wire::*;
+use openr_robot::model::{Design, PrimitiveKind, RobotModel, POSTURE_PARTS, POSTURE_STAND};
 
 /// Key → value (as text) of everything the Python side copies.
 fn rust_table() -> BTreeMap<String, String> {
@@ -123,7 +123,7 @@ fn the_python_peers_copy_the_rust_numbers_exactly() {
     // 10 kinds, 7 roles, 5 FRAME flags, 11 classes, 18 gains, 18 stand angles...
     assert!(rust.len() > 70, "{rust:?}");
     let diff = differences(&rust, &python_table());
-    assert!(diff.is_empty(), "the Python peers disagree with the runtime:\n{}", diff.join("\n"));
+    assert!(diff.is_empty(), "the Python peers disagree with the Rust protocol definition:\n{}", diff.join("\n"));
 }
 
 #[test]

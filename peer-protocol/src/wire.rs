@@ -254,9 +254,9 @@ pub fn hello(roles: u32, flags: u32, name: &str) -> Vec<u8> {
 }
 
 /// READINGS payload: joints (id, µrad) then sensors (id, value).
-pub fn parse_readings(p: &[u8]) -> Result<crate::robot::Readings, String> {
+pub fn parse_readings(p: &[u8]) -> Result<openr_robot::Readings, String> {
     let mut i = In::new(p);
-    let mut r = crate::robot::Readings::default();
+    let mut r = openr_robot::Readings::default();
     let n = i.u16()?;
     for _ in 0..n {
         r.joints.push((i.u32()?, i.i32()?));
@@ -271,7 +271,7 @@ pub fn parse_readings(p: &[u8]) -> Result<crate::robot::Readings, String> {
     Ok(r)
 }
 
-pub fn readings(r: &crate::robot::Readings) -> Vec<u8> {
+pub fn readings(r: &openr_robot::Readings) -> Vec<u8> {
     let mut o = Out::default();
     o.u16(r.joints.len() as u16);
     for &(id, v) in &r.joints {
@@ -317,7 +317,7 @@ mod tests {
 
     #[test]
     fn readings_with_trailing_bytes_are_refused() {
-        let mut p = readings(&crate::robot::Readings { joints: vec![(1, 2)], sensors: vec![] });
+        let mut p = readings(&openr_robot::Readings { joints: vec![(1, 2)], sensors: vec![] });
         assert!(parse_readings(&p).is_ok());
         p.push(0);
         assert!(parse_readings(&p).unwrap_err().contains("1 bytes after the sensors"), "{:?}", parse_readings(&p));
@@ -329,7 +329,7 @@ mod tests {
         assert_eq!(h, Hello { roles: 17, flags: 1, name: "sim".into() });
         assert!(parse_hello(&hello(1 << 9, 0, "")).is_err());
         assert!(parse_hello(&[1, 0]).is_err());
-        let r = crate::robot::Readings { joints: vec![(0x100, -5)], sensors: vec![(0x130, 7)] };
+        let r = openr_robot::Readings { joints: vec![(0x100, -5)], sensors: vec![(0x130, 7)] };
         assert_eq!(parse_readings(&readings(&r)).unwrap(), r);
         assert!(parse_readings(&readings(&r)[..9]).is_err());
     }

@@ -1,10 +1,10 @@
 //! The checks of a peer's payloads that need no runtime state, only the robot model:
 //! the message handlers call them, and the fuzz checks (fuzz-checks `peer`) drive them
 //! without a runtime.
-use super::role_of;
-use super::wire::*;
-use crate::robot::model::RobotModel;
-use crate::robot::Readings;
+use crate::role_of;
+use crate::wire::*;
+use openr_robot::model::RobotModel;
+use openr_robot::Readings;
 
 /// Every primitive of a READINGS message is known, listed in its section (joints or
 /// sensors) and belongs to a role in `roles`. The refusal: (error code, text).
