@@ -160,6 +160,9 @@ pub fn boot(
     if connect.1.iter().any(|c| c.subject == crate::vr::CAMERA_SERVICE) {
         rt.vr.want_camera();
     }
+    if connect.1.iter().any(|c| c.subject == crate::vr::MIC_SERVICE) {
+        rt.vr.want_mic();
+    }
     if let Err(i) = connect_all(rt, connect.0, connect.1, lenient, watchdog, failures)? {
         return Ok(Err(i));
     }

@@ -48,6 +48,9 @@ pub struct VrService {
     mic: Mutex<crate::audio::Mic>,
     /// Images are rendered only when a CONNECT.CFG line names the camera service.
     camera_wanted: std::sync::atomic::AtomicBool,
+    /// Mic blocks are published only when a CONNECT.CFG line names the mic service
+    /// (otherwise the audio object would wake every 32 ms for nothing).
+    mic_wanted: std::sync::atomic::AtomicBool,
     /// Frames run, and those that started more than a frame late (real-time speeds).
     pub frames: std::sync::atomic::AtomicU64,
     pub late_frames: std::sync::atomic::AtomicU64,
@@ -59,6 +62,8 @@ pub struct VrService {
 
 /// The camera's service name: rendering is skipped unless something observes it.
 pub const CAMERA_SERVICE: &str = "OVirtualRobotComm.FbkImageSensor.OFbkImageVectorData.S";
+/// The mic's: its blocks are published only when something observes it.
+pub const MIC_SERVICE: &str = "OVirtualRobotAudioComm.Mic.OSoundVectorData.S";
 
 impl VrService {
     pub fn new(mut robot: VirtualRobot, trace: Option<File>, speaker: crate::audio::Speaker, mic: crate::audio::Mic) -> VrService {
@@ -70,6 +75,7 @@ impl VrService {
             speaker: Mutex::new(speaker),
             mic: Mutex::new(mic),
             camera_wanted: std::sync::atomic::AtomicBool::new(false),
+            mic_wanted: std::sync::atomic::AtomicBool::new(false),
             frames: std::sync::atomic::AtomicU64::new(0),
             late_frames: std::sync::atomic::AtomicU64::new(0),
             peers: crate::peer::Hub::default(),
@@ -79,6 +85,10 @@ impl VrService {
 
     pub fn want_camera(&self) {
         self.camera_wanted.store(true, std::sync::atomic::Ordering::Release);
+    }
+
+    pub fn want_mic(&self) {
+        self.mic_wanted.store(true, std::sync::atomic::Ordering::Release);
     }
 
     /// A sound vector received by the speaker.
@@ -184,9 +194,13 @@ impl VrService {
             } else {
                 self.mic.lock().unwrap_or_else(|p| p.into_inner()).next_block(len)
             };
+            // The sound goes on (a mic file or peer is read at the robot's pace) whether
+            // or not an object listens.
             let mic_id = self.robot().primitive_of(crate::robot::model::Part::Mic).unwrap_or(0);
-            if let Ok(v) = vectors::build_mic_vector(mic_id, out.frame, &block) {
-                self.publish_slice(rt, SERVICE_MIC, &v);
+            if self.mic_wanted.load(std::sync::atomic::Ordering::Acquire) {
+                if let Ok(v) = vectors::build_mic_vector(mic_id, out.frame, &block) {
+                    self.publish_slice(rt, SERVICE_MIC, &v);
+                }
             }
         }
         if let Some(t) = &self.trace {
