@@ -234,6 +234,24 @@ fn get_robot_design_on_the_host_answers_the_robots_design() {
     assert!(h_out.stdout.contains("HostApi: GetRobotDesign ok (ERS-210)"), "the host runs as an ERS-7:\n{}\n{}", h_out.stdout, h_out.stderr);
 }
 
+/// With no robot behind the proxy line, GetRobotDesign is oFAIL (after the proxy's
+/// connect wait), said once on stderr — not the host's own design.
+#[test]
+fn get_robot_design_on_the_host_fails_while_the_robot_is_unreachable() {
+    let built = build("rp-hostapi");
+    let tmp = tempfile::tempdir().unwrap();
+    let port = ports(1)[0]; // free: nothing listens there
+    let h_ms = tmp.path().join("host/MS");
+    copy_tree(&built.dir.path().join("rp-hostapi/RP/host/MS"), &h_ms);
+    fs::write(h_ms.join("OPEN-R/MW/CONF/HOSTGW.CFG"), format!("!ROBOT_PROXY {port} 127.0.0.1\n")).unwrap();
+    let mut h = host(&h_ms, &[]);
+    let asked = h.wait_for("HostApi: GetRobotDesign", PATIENCE);
+    let h_out = h.stop();
+    assert!(asked, "{}\n{}", h_out.stdout, h_out.stderr);
+    assert!(h_out.stdout.contains("HostApi: GetRobotDesign failed"), "{}\n{}", h_out.stdout, h_out.stderr);
+    assert_eq!(h_out.stderr.matches("the robot's OPEN-R API proxy is not reachable").count(), 1, "{}", h_out.stderr);
+}
+
 /// A host MS with no objects of its own, with this HOSTGW.CFG.
 fn gateway_only_host(dir: &Path, hostgw: &str) -> PathBuf {
     let conf = dir.join("MS/OPEN-R/MW/CONF");
