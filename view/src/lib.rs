@@ -10,6 +10,7 @@
 //! [`chunks`] (docs/recording.md). With `--sim mujoco`, [`world`] serves one page for
 //! every robot of the world and the field.
 mod chunks;
+pub mod moments;
 pub mod record;
 pub mod replay;
 mod server;
