@@ -9,6 +9,7 @@
 //! [`replay`] reads back and the same page plays on a timeline, fetching it in
 //! [`chunks`] (docs/recording.md). With `--sim mujoco`, [`world`] serves one page for
 //! every robot of the world and the field.
+mod cdt;
 mod chunks;
 pub mod moments;
 pub mod record;

@@ -8,6 +8,7 @@ use std::io::Read;
 use std::net::SocketAddr;
 use std::sync::{Arc, OnceLock};
 
+use crate::cdt::Overlay;
 use sdk_runtime::error::{ErrorKind, Result};
 use sdk_runtime::runtime::Runtime;
 use tiny_http::{Header, Method, Request, Response, Server};
@@ -133,6 +134,12 @@ fn answer_live(rt: &'static Runtime, mut req: Request) -> Answer {
             Ok(Some(png)) => Response::from_data(png).with_header(header("Content-Type", "image/png")),
             Ok(None) => Response::from_string("the camera has taken no picture yet\n").with_status_code(404),
             Err(e) => Response::from_string(format!("cannot encode the camera picture: {e}\n")).with_status_code(500),
+        },
+        (Method::Get, "/cdt.png") => match crate::cdt::overlay_png(rt) {
+            Ok(Overlay::Png(png)) => Response::from_data(png).with_header(header("Content-Type", "image/png")),
+            Ok(Overlay::NoPicture) => Response::from_string("no CDT layer: the camera has taken no picture yet\n").with_status_code(404),
+            Ok(Overlay::NoTable) => Response::from_string("no CDT layer: the program set no colour detection table (SetCdtVectorData)\n").with_status_code(404),
+            Err(e) => Response::from_string(format!("cannot encode the CDT layer: {e}\n")).with_status_code(500),
         },
         (Method::Post, "/control") => {
             let mut line = String::new();

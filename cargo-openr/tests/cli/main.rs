@@ -29,4 +29,5 @@ mod stick;
 mod support;
 mod tools;
 mod view;
+mod view_cdt;
 mod world_view;

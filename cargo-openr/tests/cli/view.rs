@@ -303,17 +303,20 @@ fn page_follows_the_run() {
 
 #[test]
 fn camera_png_is_not_found_while_the_camera_took_no_picture() {
-    // hello never opens the camera: the run has no picture to show, which is no
-    // server error.
+    // hello never opens the camera: the run has no picture to show, nor a CDT layer
+    // (view_cdt.rs), which is no server error.
     let p = build("hello");
     let mut run = spawn_ms(&p.ms(), &["--view", "--speed", "max"], &[]);
     let addr = view_addr(&mut run);
     pause_after(&addr, 200);
     let (code, body) = http(&addr, "GET", "/camera.png", "");
+    let (cdt_code, cdt_body) = http(&addr, "GET", "/cdt.png", "");
     let (_, state) = http(&addr, "GET", "/state", "");
     let _ = run.stop();
     assert_eq!(code, 404, "{body}");
     assert!(body.contains("no picture"), "{body}");
+    assert_eq!(cdt_code, 404, "{cdt_body}");
+    assert!(cdt_body.contains("no CDT layer") && cdt_body.contains("no picture"), "{cdt_body}");
     let state: serde_json::Value = serde_json::from_str(&state).unwrap();
     assert_eq!(state["camera_images"], 0, "{state}");
 }
