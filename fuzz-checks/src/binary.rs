@@ -106,7 +106,7 @@ pub fn elf(data: &[u8]) -> bool {
 /// read past the datagram, no more addresses than answers; a query the resolver builds
 /// reads back to the name it was built from.
 pub fn dns(data: &[u8]) -> bool {
-    use sdk_runtime::net::dns;
+    use openr_ipstack::dns;
     let id = u16::from_be_bytes([data.first().copied().unwrap_or(0), data.get(1).copied().unwrap_or(0)]);
     let name: String = data.iter().take(80).map(|&b| if b.is_ascii_alphanumeric() || b == b'-' { b as char } else { '.' }).collect();
     let query = dns::build_query(id, &name, 1);

@@ -141,7 +141,7 @@ fn built_seeds(target: &str) -> Vec<Vec<u8>> {
         }
         "dns" => {
             // A response to `aibo.example` with a CNAME and an A record, compressed names.
-            let mut r = sdk_runtime::net::dns::build_query(0x0a1b, "aibo.example", 1);
+            let mut r = openr_ipstack::dns::build_query(0x0a1b, "aibo.example", 1);
             r[2] = 0x81;
             r[3] = 0x80;
             r[7] = 2;

@@ -83,12 +83,12 @@ fn paths(v: &[(usize, String)]) -> Vec<&str> {
 /// WLANCONF.TXT / WLANDFLT.TXT: `KEY=VALUE` lines; nothing is an error.
 pub fn wlan(data: &[u8]) -> bool {
     let text = String::from_utf8_lossy(data);
-    let map = sdk_runtime::net::config::parse_wlan(&text);
+    let map = openr_ipstack::config::parse_wlan(&text);
     for (k, v) in &map {
         assert!(!k.is_empty() && k.trim() == k && v.trim() == v && !k.contains(['=', '#']) && !v.contains('#'));
     }
     let printed: String = map.iter().map(|(k, v)| format!("{k}={v}\n")).collect();
-    assert_eq!(sdk_runtime::net::config::parse_wlan(&printed), map);
+    assert_eq!(openr_ipstack::config::parse_wlan(&printed), map);
     !map.is_empty()
 }
 

@@ -61,7 +61,7 @@ pub struct RunOptions {
     /// at `--speed max`, before it is reported stuck (lifecycle.rs, sched.rs).
     pub watchdog: Duration,
     /// Where endpoints bind, port offset and remaps (network-api 11).
-    pub net: crate::net::config::NetOptions,
+    pub net: openr_ipstack::NetOptions,
 }
 
 /// How a run went.

@@ -4,9 +4,9 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use anyhow::Context;
+use openr_ipstack::config::{self as net_config, NetOptions};
 use openr_wrappers::install;
 use sdk_runtime::boot::{self, Ended, RunOptions};
-use sdk_runtime::net::config::{self as net_config, NetOptions};
 use sdk_runtime::runtime::Diag;
 
 use crate::ops::child_args::Forward;
@@ -108,8 +108,8 @@ pub struct Args {
     #[arg(long)]
     no_fp_traps: bool,
     /// Send what the robot addresses to ROBOT_IP[:PORT] to HOST_IP[:PORT] instead, e.g. 10.0.1.2=127.0.0.1 for a program with its server's LAN address built in (repeatable)
-    #[arg(long = "net-map", value_name = "ROBOT=HOST", value_parser = sdk_runtime::net::config::parse_addr_map)]
-    net_map: Vec<sdk_runtime::net::config::AddrMap>,
+    #[arg(long = "net-map", value_name = "ROBOT=HOST", value_parser = net_config::parse_addr_map)]
+    net_map: Vec<net_config::AddrMap>,
     /// Real time an object may take to answer Init/Stop/Destroy or a connection, or to run one message at --speed max, before it is reported stuck (e.g. 5s, 500ms; 0.1 s to 1 h)
     #[arg(long, value_name = "DURATION", default_value = "5s", value_parser = parse_watchdog)]
     watchdog: Duration,
@@ -218,6 +218,7 @@ pub fn exec(args: Args, given: &clap::ArgMatches, shell: &mut Shell) -> anyhow::
             port_offset: args.port_offset,
             addr_map: args.net_map.clone(),
             port_map: std::env::var(net_config::ENV_PORT_MAP).map(|s| net_config::parse_port_map(&s)).unwrap_or_default(),
+            trace: std::env::var_os(net_config::ENV_TRACE).is_some_and(|v| v != "0"),
         },
     };
     if let Some(tool) = args.gdb.then_some(Debugger::Gdb).or_else(|| args.valgrind.clone().map(Debugger::Valgrind)) {

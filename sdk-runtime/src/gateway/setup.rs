@@ -15,8 +15,8 @@ use super::wire::Hello;
 use super::{Setup, HOST_GATEWAY, ROBOT_GATEWAY, SETUP};
 use crate::error::{ErrorKind, Result};
 use crate::loader::Module;
-use crate::net::config::NetConfig;
 use crate::runtime::Runtime;
+use openr_ipstack::NetConfig;
 
 /// What a line's thread does once the gateway starts.
 pub enum Target {
@@ -61,7 +61,7 @@ pub fn module(name: &str, bin: &Path) -> Result<Module> {
         }
     };
     let shown = path.as_deref().map_or_else(|| file.to_string(), |p| p.display().to_string());
-    let net = NetConfig::new(&crate::net::options(), rt.diag.quiet);
+    let net = NetConfig::new(&crate::net::options(), Arc::new(crate::net::RuntimeHost));
     let (links, targets) = prepare(&shown, &lines, host, &net).map_err(err)?;
     if let Some(p) = links.iter().find(|l| l.hello.suffix == b'P').filter(|_| host) {
         super::proxy::set_client(p.clone());
@@ -250,7 +250,7 @@ mod tests {
     /// The host side's refusal of `text` (no socket is opened on the host side).
     fn host_error(text: &str) -> String {
         let lines = gwcfg::parse("HOSTGW.CFG", text).expect("the line syntax is fine");
-        let net = NetConfig::new(&Default::default(), true);
+        let net = NetConfig::new(&Default::default(), Arc::new(crate::net::RuntimeHost));
         match prepare("HOSTGW.CFG", &lines, true, &net) {
             Ok(_) => panic!("accepted:\n{text}"),
             Err(e) => e,
@@ -271,7 +271,7 @@ mod tests {
         assert!(host_error(&many).ends_with("the gateway has as many service slots)"), "{}", host_error(&many));
         // Two robots may use the same port.
         let lines = gwcfg::parse("HOSTGW.CFG", "A.B.char.S 59002 127.0.0.1\nA.C.char.O 59002 127.0.0.2\n").unwrap();
-        assert!(prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), true)).is_ok());
+        assert!(prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), Arc::new(crate::net::RuntimeHost))).is_ok());
     }
 
     #[test]
@@ -287,7 +287,7 @@ mod tests {
         assert_eq!(ch[3].warnings(), ["dmin=3 dmax=2: expected 1 <= dmin <= dmax; the defaults dskip=0 dmin=1 dmax=1 are used"]);
         assert_eq!(ch[4].buf_ctrl(), Ok((0, 1, 1)));
         assert_eq!(ch[4].warnings(), ["unknown option `dfoo=1` ignored (known: dskip, dmin, dmax)"]);
-        let (links, _) = prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), true)).unwrap();
+        let (links, _) = prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), Arc::new(crate::net::RuntimeHost))).unwrap();
         let bufs: Vec<_> = links.iter().map(|l| l.buf_ctrl).collect();
         assert_eq!(bufs, [(1, 2, 8), (0, 1, 1), (0, 1, 1), (0, 1, 1), (0, 1, 1)], "only an observer line's valid options apply");
     }

@@ -56,7 +56,7 @@ fn dns_ep(st: &mut State, id: u32) -> Option<&mut DnsEp> {
     }
 }
 
-pub fn dns_op(st: &mut State, net: &'static Net, p: Pending) {
+pub(crate) fn dns_op(st: &mut State, net: &'static Net, p: Pending) {
     let req = p.req;
     let id = req.endpoint;
     let Some(ep) = dns_ep(st, id) else { return p.fail(code::CONNECTION_CLOSED) };

@@ -3,14 +3,16 @@
 //! (11.3) and the wireless-LAN settings (WLANCONF.TXT / WLANDFLT.TXT, 2.4).
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::net::Ipv4Addr;
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
+
+use super::{Host, Report};
 
 /// Explicit remaps, `robot=host` pairs separated by commas (`21=2121,123=40123`), read
 /// by `cargo openr run` into [`NetOptions::port_map`].
 pub const ENV_PORT_MAP: &str = "OPENR_NET_PORT_MAP";
 
 /// The network settings of a run (`RunOptions::net`): `--net-bind`, `--port-offset`,
-/// `--net-map`, `OPENR_NET_PORT_MAP`.
+/// `--net-map`, `OPENR_NET_PORT_MAP`, `OPENR_NET_TRACE`.
 #[derive(Debug, Clone, Default)]
 pub struct NetOptions {
     /// Host address for the robot's own address (127.0.0.1 when `None`).
@@ -21,7 +23,12 @@ pub struct NetOptions {
     pub addr_map: Vec<AddrMap>,
     /// Explicit robot → host port remaps.
     pub port_map: HashMap<u16, u16>,
+    /// Every request and reply as a line of [`Report::trace`].
+    pub trace: bool,
 }
+
+/// `OPENR_NET_TRACE=1` (not `0`): [`NetOptions::trace`], read by `cargo openr run`.
+pub const ENV_TRACE: &str = "OPENR_NET_TRACE";
 
 /// One `--net-map` entry: connections and datagrams the robot sends to `robot` (all
 /// ports, or `robot_port` only) go to `host` (its port, or `host_port`).
@@ -70,18 +77,19 @@ pub struct NetConfig {
     pub offset: u32,
     pub map: HashMap<u16, u16>,
     pub addr_map: Vec<AddrMap>,
-    pub quiet: bool,
+    /// Where the remapped ports are announced and warnings go.
+    pub(crate) report: Arc<dyn Report>,
     announced: Mutex<HashSet<(u16, u16, &'static str)>>,
 }
 
 impl NetConfig {
-    pub fn new(opts: &NetOptions, quiet: bool) -> NetConfig {
+    pub fn new(opts: &NetOptions, report: Arc<dyn Report>) -> NetConfig {
         NetConfig {
             bind: u32::from(opts.bind.unwrap_or(Ipv4Addr::LOCALHOST)),
             offset: opts.port_offset.into(),
             map: opts.port_map.clone(),
             addr_map: opts.addr_map.clone(),
-            quiet,
+            report,
             announced: Mutex::new(HashSet::new()),
         }
     }
@@ -190,8 +198,8 @@ impl NetConfig {
 
     fn announce(&self, robot: u16, host: u16, what: &'static str) {
         let mut seen = self.announced.lock().unwrap_or_else(|p| p.into_inner());
-        if seen.insert((robot, host, what)) && !self.quiet {
-            eprintln!("net: robot port {robot} ({what}) is host port {host}");
+        if seen.insert((robot, host, what)) {
+            self.report.info(&format!("net: robot port {robot} ({what}) is host port {host}"));
         }
     }
 }
@@ -220,13 +228,11 @@ pub fn parse_wlan(text: &str) -> BTreeMap<String, String> {
 
 /// The robot's wireless settings: defaults, overridden by WLANDFLT.TXT, overridden by
 /// WLANCONF.TXT (both in /MS/OPEN-R/SYSTEM/CONF).
-pub fn wlan_settings() -> BTreeMap<String, String> {
+pub fn wlan_settings(host: &dyn Host) -> BTreeMap<String, String> {
     let mut m: BTreeMap<String, String> = WLAN_DEFAULTS.iter().map(|(k, v)| (k.to_string(), v.to_string())).collect();
-    if let Some(rt) = crate::runtime::Runtime::get() {
-        for file in ["/MS/OPEN-R/SYSTEM/CONF/WLANDFLT.TXT", "/MS/OPEN-R/SYSTEM/CONF/WLANCONF.TXT"] {
-            if let Some(text) = rt.ms.existing(file).and_then(|p| std::fs::read_to_string(p).ok()) {
-                m.extend(parse_wlan(&text));
-            }
+    for file in ["/MS/OPEN-R/SYSTEM/CONF/WLANDFLT.TXT", "/MS/OPEN-R/SYSTEM/CONF/WLANCONF.TXT"] {
+        if let Some(text) = host.read_stick(file) {
+            m.extend(parse_wlan(&text));
         }
     }
     m
@@ -234,53 +240,4 @@ pub fn wlan_settings() -> BTreeMap<String, String> {
 
 pub fn parse_ip(s: &str) -> Option<u32> {
     s.trim().parse::<Ipv4Addr>().ok().map(u32::from)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn cfg(offset: u32, map: &str) -> NetConfig {
-        NetConfig { bind: 0x7f000001, offset, map: parse_port_map(map), addr_map: Vec::new(), quiet: true, announced: Mutex::new(HashSet::new()) }
-    }
-
-    #[test]
-    fn ports() {
-        let c = cfg(5, "123=40123");
-        assert_eq!(c.local_port(54321, "t"), Some(54326));
-        assert_eq!(c.local_port(21, "t"), Some(10026));
-        assert_eq!(c.local_port(0, "t"), Some(0));
-        assert_eq!(c.local_port(65535, "t"), None);
-        assert_eq!(c.remote_port(0x7f000001, 123, "t"), 40123);
-        assert_eq!(c.remote_port(0x7f000001, 53, "t"), 10053);
-        assert_eq!(c.remote_port(0x0a000102, 123, "t"), 123);
-        assert_eq!(c.remote_port(0x7f000001, 40000, "t"), 40000);
-        assert_eq!(c.robot_peer_port(0x7f000001, 40123), 123);
-        assert_eq!(c.robot_peer_port(0x7f000001, 10053), 53);
-        assert_eq!(c.robot_peer_port(0x7f000001, 45000), 45000);
-    }
-
-    #[test]
-    fn address_map() {
-        let mut c = cfg(0, "");
-        c.addr_map = vec![parse_addr_map("10.0.1.2:5000=127.0.0.1:6000").unwrap(), parse_addr_map("10.0.1.2=127.0.0.1").unwrap()];
-        assert_eq!(c.remote(0x0a000102, 5000, "t"), (0x7f000001, 6000));
-        assert_eq!(c.remote(0x0a000102, 54321, "t"), (0x7f000001, 54321));
-        assert_eq!(c.remote(0x0a000102, 21, "t"), (0x7f000001, 10021), "then the loopback remap");
-        assert_eq!(c.remote(0x0a000103, 54321, "t"), (0x0a000103, 54321), "unmapped: unchanged");
-        assert_eq!(c.robot_peer(0x7f000001, 6000), (0x0a000102, 5000));
-        assert_eq!(c.robot_peer(0x7f000001, 54321), (0x0a000102, 54321));
-        assert_eq!(c.robot_peer(0x7f000002, 54321), (0x7f000002, 54321));
-        for bad in ["10.0.1.2", "10.0.1.2=", "x=127.0.0.1", "10.0.1.2:0=127.0.0.1:1", "10.0.1.2=127.0.0.1:6000", "10.0.1.2:70000=127.0.0.1"] {
-            assert!(parse_addr_map(bad).is_err(), "{bad}");
-        }
-        assert_eq!(parse_addr_map(" 10.0.1.2:5000=127.0.0.1:6000").unwrap().to_string(), "10.0.1.2:5000=127.0.0.1:6000");
-    }
-
-    #[test]
-    fn wlan() {
-        let m = parse_wlan("# c\nETHER_IP=10.0.1.7\n essid = X # y\n\n");
-        assert_eq!(m["ETHER_IP"], "10.0.1.7");
-        assert_eq!(m["ESSID"], "X");
-    }
 }

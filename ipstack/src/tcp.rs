@@ -297,9 +297,7 @@ fn bind_source_port(cfg: &NetConfig, fd: &OwnedFd, robot_lport: u16) -> u16 {
     if ok {
         return robot_lport;
     }
-    if let Some(rt) = crate::runtime::Runtime::get() {
-        rt.diag.warn(&format!("net: cannot connect from robot port {robot_lport}; using an ephemeral port"));
-    }
+    cfg.report.warn(&format!("net: cannot connect from robot port {robot_lport}; using an ephemeral port"));
     0
 }
 

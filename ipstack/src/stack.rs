@@ -3,13 +3,14 @@
 //! thread that finishes what would block.
 use std::collections::{BTreeMap, HashMap};
 use std::os::fd::AsRawFd;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use super::codes::{ant, op, tcp, PROTO_DNS, PROTO_ENV, PROTO_INIT, PROTO_TCP, PROTO_UDP};
 use super::config::{self, NetConfig};
 use super::tcp::{Listener, TcpEp};
 use super::udp::UdpEp;
-use super::{dns, sys, Net, NetResult, Pending};
+use super::{dns, sys, Host, Net, NetResult, Pending};
 
 /// `antModuleRef.module` of every endpoint (never null: null means the environment).
 const MODULE_MAGIC: usize = 0x414e_5400;
@@ -48,6 +49,8 @@ pub struct State {
     registry: Option<BTreeMap<String, RegValue>>,
     pub dns_servers: Option<Vec<u32>>,
     pub domain: Option<String>,
+    /// Where the robot's settings files are and warnings go.
+    host: Arc<dyn Host>,
 }
 
 /// The TCP endpoint `id` of a table (a borrow of the table alone, so that the rest of
@@ -67,7 +70,7 @@ enum Token {
 }
 
 impl State {
-    pub fn new() -> State {
+    pub fn new(host: Arc<dyn Host>) -> State {
         State {
             next_id: 1,
             eps: HashMap::new(),
@@ -78,6 +81,7 @@ impl State {
             registry: None,
             dns_servers: None,
             domain: None,
+            host,
         }
     }
 
@@ -95,7 +99,8 @@ impl State {
     }
 
     fn registry(&mut self) -> &mut BTreeMap<String, RegValue> {
-        self.registry.get_or_insert_with(|| config::wlan_settings().into_iter().map(|(k, v)| (k, RegValue::Str(v))).collect())
+        let host = &self.host;
+        self.registry.get_or_insert_with(|| config::wlan_settings(&**host).into_iter().map(|(k, v)| (k, RegValue::Str(v))).collect())
     }
 
     pub fn registry_value(&mut self, key: &str) -> Option<String> {
@@ -280,12 +285,10 @@ fn env_op(st: &mut State, p: Pending) {
             // The kernel may still read or write it for a pending operation: freeing it
             // now would corrupt the heap. The buffer stays; the program is told.
             Some(&(base, size)) if base == req.region_base as usize && st.eps.values().any(|e| e.uses_buffer(base, size)) => {
-                if let Some(rt) = crate::runtime::Runtime::get() {
-                    rt.diag.warn(&format!(
-                        "net: shared buffer {} destroyed while a Send or Receive on it is pending: refused (antFAIL), it stays allocated",
-                        req.region
-                    ));
-                }
+                st.host.warn(&format!(
+                    "net: shared buffer {} destroyed while a Send or Receive on it is pending: refused (antFAIL), it stays allocated",
+                    req.region
+                ));
                 p.fail(ant::FAIL)
             }
             Some(&(base, size)) if base == req.region_base as usize => {

@@ -1,0 +1,205 @@
+//! The stack as a library: requests as libantMCOOP submits them, real sockets on the
+//! host, replies through a recording [`Host`] (two robots in one process).
+use std::ffi::{c_void, CString};
+use std::io::Write;
+use std::net::{Ipv4Addr, TcpListener, TcpStream};
+use std::sync::Arc;
+use std::time::Duration;
+
+use common::Recorder;
+use openr_ipstack::{Net, NetOptions, NetResult, Request};
+
+mod common;
+
+const PROTO_ENV: i32 = 0;
+const PROTO_INIT: i32 = 100;
+const PROTO_TCP: i32 = 1;
+const ENV_CREATE_ENDPOINT: i32 = -1;
+const ENV_CREATE_BUFFER: i32 = -2;
+const ENV_DESTROY_BUFFER: i32 = -3;
+const INIT_SET: i32 = -1;
+const INIT_GET: i32 = -3;
+const TCP_LISTEN: i32 = 2;
+const TCP_RECEIVE: i32 = 5;
+const ANT_FAIL: i32 = 1;
+const REGISTRY_NO_KEY: i32 = 23;
+
+/// A guard against a hang, not a speed assumption.
+const PATIENCE: Duration = Duration::from_secs(20);
+
+struct Robot {
+    net: &'static Net,
+    host: Arc<Recorder>,
+}
+
+fn robot(opts: NetOptions, stick: Vec<(&'static str, &'static str)>) -> Robot {
+    let host = Arc::new(Recorder::new(stick));
+    let net = Net::start(&opts, host.clone()).expect("the stack starts");
+    Robot { net, host }
+}
+
+/// The object's `encode`: the test's "message" is the result struct itself.
+unsafe extern "C" fn encode(blob: *mut c_void, res: *const NetResult) {
+    // SAFETY: `blob` is a message of `size_of::<NetResult>()` bytes (see `submit`), `res` a valid result.
+    unsafe { blob.cast::<NetResult>().write_unaligned(*res) };
+}
+
+fn request(proto: i32, op: i32) -> Request {
+    // SAFETY: all-zero is a valid value of this plain C struct (null pointers, zero numbers).
+    let mut r: Request = unsafe { std::mem::zeroed() };
+    (r.proto, r.op) = (proto, op);
+    r
+}
+
+fn decode(blob: &[u8]) -> NetResult {
+    assert_eq!(blob.len(), std::mem::size_of::<NetResult>());
+    // SAFETY: `blob` holds a whole NetResult written by `encode`.
+    unsafe { blob.as_ptr().cast::<NetResult>().read_unaligned() }
+}
+
+impl Robot {
+    /// Submits `req`; `Some((oid, selector))` answers later to that object, `None` waits.
+    fn submit(&self, req: &Request, to: Option<(usize, u32)>) -> (i32, NetResult) {
+        let mut blob = vec![0u8; std::mem::size_of::<NetResult>()];
+        let (oid, selector) = to.unwrap_or((0, 0));
+        // SAFETY: `req` is a valid request; `blob` is the message `encode` writes into.
+        let rc = unsafe { self.net.submit(req, blob.as_mut_ptr().cast(), blob.len(), encode, oid as *mut c_void, selector, to.is_none()) };
+        (rc, decode(&blob))
+    }
+
+    fn call(&self, req: &Request) -> NetResult {
+        let (rc, r) = self.submit(req, None);
+        assert_eq!(rc, 0);
+        r
+    }
+
+    fn reply(&self) -> (usize, u32, NetResult) {
+        let (oid, selector, blob) = self.host.replies.lock().unwrap().recv_timeout(PATIENCE).expect("a reply is sent");
+        (oid, selector, decode(&blob))
+    }
+
+    fn tcp_endpoint(&self) -> u32 {
+        let mut req = request(PROTO_ENV, ENV_CREATE_ENDPOINT);
+        req.value = PROTO_TCP;
+        let r = self.call(&req);
+        assert_eq!(r.error, 0);
+        assert_eq!(self.net.endpoint_protocol(r.endpoint), PROTO_TCP);
+        r.endpoint
+    }
+}
+
+/// A robot port whose host ports with offsets 1 and 2 are free now.
+fn free_robot_port() -> u16 {
+    loop {
+        let p = TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
+        if p < 65000 && (1..=2).all(|o| TcpListener::bind(("127.0.0.1", p + o)).is_ok()) {
+            return p;
+        }
+    }
+}
+
+#[test]
+fn two_robots_listen_on_their_own_host_ports_and_answer_the_listening_object() {
+    let port = free_robot_port();
+    let robots: Vec<Robot> = (1..=2).map(|offset| robot(NetOptions { port_offset: offset, ..Default::default() }, Vec::new())).collect();
+    for (i, r) in robots.iter().enumerate() {
+        let offset = i as u16 + 1;
+        assert_eq!(r.net.robot_number(), u32::from(offset));
+        let mut listen = request(PROTO_TCP, TCP_LISTEN);
+        listen.endpoint = r.tcp_endpoint();
+        listen.lport = port.into();
+        let oid = 0x8000_0040 + i;
+        assert_eq!(r.submit(&listen, Some((oid, 7))).0, 0);
+        let client = TcpStream::connect((Ipv4Addr::LOCALHOST, port + offset)).expect("the robot's port is its host port + offset");
+        let (to, selector, res) = r.reply();
+        assert_eq!((to, selector), (oid, 7), "the reply goes to the object that listened");
+        assert_eq!((res.proto, res.op, res.error), (PROTO_TCP, TCP_LISTEN, 0));
+        assert_eq!(res.lport, u32::from(port), "the robot's view of its port");
+        assert_eq!((res.faddr, res.fport), (u32::from(Ipv4Addr::LOCALHOST), u32::from(client.local_addr().unwrap().port())));
+        assert_eq!(r.host.lines(), [format!("net: robot port {port} (TCP listen) is host port {}", port + offset)]);
+    }
+}
+
+#[test]
+fn a_buffer_in_use_stays_and_the_receive_completes_into_it() {
+    let r = robot(NetOptions::default(), Vec::new());
+    let port = free_robot_port();
+    let mut listen = request(PROTO_TCP, TCP_LISTEN);
+    (listen.endpoint, listen.lport) = (r.tcp_endpoint(), port.into());
+    r.submit(&listen, Some((1, 1)));
+    let mut client = TcpStream::connect((Ipv4Addr::LOCALHOST, port)).unwrap();
+    assert_eq!(r.reply().2.error, 0);
+
+    let mut create = request(PROTO_ENV, ENV_CREATE_BUFFER);
+    create.value = 100;
+    let buf = r.call(&create);
+    assert_eq!((buf.error, buf.buf_size), (0, 4096), "whole pages");
+    let mut recv = request(PROTO_TCP, TCP_RECEIVE);
+    (recv.endpoint, recv.buffer, recv.size, recv.size_min) = (listen.endpoint, buf.base.cast(), 100, 5);
+    assert_eq!(r.submit(&recv, Some((2, 3))).0, 0);
+
+    let mut destroy = request(PROTO_ENV, ENV_DESTROY_BUFFER);
+    (destroy.region, destroy.region_base) = (buf.region, buf.base);
+    assert_eq!(r.call(&destroy).error, ANT_FAIL);
+    let warning =
+        format!("warning: net: shared buffer {} destroyed while a Send or Receive on it is pending: refused (antFAIL), it stays allocated", buf.region);
+    assert_eq!(r.host.lines(), [warning]);
+
+    client.write_all(b"hello").unwrap();
+    let (oid, selector, res) = r.reply();
+    assert_eq!((oid, selector, res.op, res.error, res.size), (2, 3, TCP_RECEIVE, 0, 5));
+    // SAFETY: the stack's live shared buffer of 4096 bytes (its destruction was refused).
+    assert_eq!(unsafe { std::slice::from_raw_parts(buf.base.cast::<u8>(), 5) }, b"hello");
+    assert_eq!(r.call(&destroy).error, 0, "nothing pending any more");
+}
+
+#[test]
+fn the_registry_reads_the_sticks_settings_and_keeps_what_objects_set() {
+    let r = robot(NetOptions::default(), vec![("/MS/OPEN-R/SYSTEM/CONF/WLANCONF.TXT", "ETHER_IP=10.0.1.7\n")]);
+    assert_eq!(r.net.registry_value("ether_ip").as_deref(), Some("10.0.1.7"));
+    let key = CString::new("Ether_IP").unwrap();
+    let mut out = [0x55 as std::ffi::c_char; 5];
+    // SAFETY: a NUL-terminated key and a 5-byte buffer.
+    assert_eq!(unsafe { r.net.config_value(key.as_ptr(), out.as_mut_ptr(), out.len()) }, 0);
+    assert_eq!(out.map(|c| c as u8), *b"10.0\0", "cut to the buffer, NUL-terminated");
+    let missing = CString::new("NO_SUCH_KEY").unwrap();
+    // SAFETY: as above.
+    assert_eq!(unsafe { r.net.config_value(missing.as_ptr(), out.as_mut_ptr(), out.len()) }, -1);
+
+    let mut set = request(PROTO_INIT, INIT_SET);
+    set.name[..5].copy_from_slice(b"depth");
+    (set.value, set.value2) = (42, -1);
+    assert_eq!(r.call(&set).error, 0);
+    let mut get = request(PROTO_INIT, INIT_GET);
+    get.name = set.name;
+    let res = r.call(&get);
+    assert_eq!((res.error, res.param_type, res.i32_), (0, -1, 42));
+    get.name[..5].copy_from_slice(b"width");
+    assert_eq!(r.call(&get).error, REGISTRY_NO_KEY);
+    assert!(r.host.lines().is_empty(), "{:?}", r.host.lines());
+}
+
+#[test]
+fn trace_says_every_request_and_reply() {
+    for trace in [false, true] {
+        let r = robot(NetOptions { trace, ..Default::default() }, Vec::new());
+        let (rc, _) = r.submit(&request(PROTO_INIT, 99), None);
+        assert_eq!(rc, 0);
+        let want: &[&str] = if trace {
+            &["net: request proto 100 op 99 endpoint 0 size 0 (call)", "net: reply proto 100 op 99 endpoint 0 -> error 1 size 0 (call)"]
+        } else {
+            &[]
+        };
+        assert_eq!(r.host.lines(), want);
+    }
+}
+
+#[test]
+fn a_null_request_is_refused() {
+    let r = robot(NetOptions::default(), Vec::new());
+    let mut blob = [0u8; 8];
+    // SAFETY: null is what is being refused; `blob` is valid.
+    let rc = unsafe { r.net.submit(std::ptr::null(), blob.as_mut_ptr().cast(), blob.len(), encode, std::ptr::null_mut(), 0, true) };
+    assert_eq!(rc, -1);
+    assert_eq!(blob, [0; 8], "nothing written");
+}
