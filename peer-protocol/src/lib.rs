@@ -13,7 +13,9 @@
 //!   the frame thread.
 //!
 //! The Python peers (`tools/robot_peer.py`, `sim/mujoco/bridge.py`) copy some of these
-//! numbers; a test of this crate reads theirs and fails on any difference.
+//! numbers and hand-code the layouts; the crate's tests read their numbers and fail on any
+//! difference, and have robot_peer.py decode every design's WELCOME and a FRAME
+//! (tests/python_decodes.rs).
 //!
 //! ```
 //! use openr_peer_protocol::wire::{message, read_message, HELLO, hello, parse_hello, ROLE_JOINTS};
