@@ -9,8 +9,7 @@ use std::collections::HashMap;
 use std::ops::Range;
 use std::sync::{Arc, Mutex};
 
-use sdk_runtime::robot::model::{Design, Leg, Part, PrimitiveKind};
-use sdk_runtime::robot::VirtualRobot;
+use sdk_runtime::robot::model::{Design, Leg, Part, PrimitiveKind, RobotModel};
 use serde_json::{json, Value};
 
 use crate::chunks::CHUNK;
@@ -20,6 +19,8 @@ const KEEP: usize = 16;
 
 pub struct Moments {
     design: Design,
+    /// The design's primitives, which every snapshot lists.
+    model: RobotModel,
     /// The trace's text and the byte range of each record in it.
     text: String,
     records: Vec<Range<usize>>,
@@ -75,7 +76,17 @@ impl Builder {
 
     pub(crate) fn finish(mut self, design: Design, text: String, pictures: Vec<u64>, views: Lines) -> Moments {
         self.close();
-        Moments { design, text, records: self.records, pictures, views, ends: self.ends, starts: self.starts, built: Mutex::new(Vec::new()) }
+        Moments {
+            design,
+            model: RobotModel::new(design),
+            text,
+            records: self.records,
+            pictures,
+            views,
+            ends: self.ends,
+            starts: self.starts,
+            built: Mutex::new(Vec::new()),
+        }
     }
 }
 
@@ -90,10 +101,6 @@ pub(crate) struct Lines {
 impl Lines {
     pub(crate) fn new(text: String, at: Vec<(u64, Range<usize>)>) -> Lines {
         Lines { text, at }
-    }
-
-    pub(crate) fn len(&self) -> usize {
-        self.at.len()
     }
 
     /// Line `i` (checked when the file was read).
@@ -135,8 +142,7 @@ impl Moments {
             return Some(hit.1);
         }
         let first = c.checked_mul(CHUNK).filter(|f| *f < self.ends.len())?;
-        let robot = VirtualRobot::new(self.design);
-        let prims = robot.model().primitives();
+        let prims = self.model.primitives();
         let mut now = self.starts[c].clone();
         let mut begin = first.checked_sub(1).map_or(0, |p| self.ends[p].2);
         let mut out = Vec::with_capacity(CHUNK);
@@ -273,7 +279,7 @@ mod tests {
     /// A trace of `n` sensor moments 32 ms apart; an LED set at moment 3 (with a second
     /// record of the same moment).
     fn locator(kind: PrimitiveKind) -> &'static str {
-        VirtualRobot::new(Design::Ers7).model().primitives().iter().find(|p| p.kind == kind).unwrap().locator
+        RobotModel::new(Design::Ers7).primitives().iter().find(|p| p.kind == kind).unwrap().locator
     }
 
     fn trace(n: u64) -> Vec<Value> {

@@ -228,19 +228,27 @@ fn read_camera_index(dir: &Path, index: &Path) -> Res<Vec<(u64, PathBuf)>> {
 /// `view.jsonl` or a world's ground truth (absent: none): each line an object with
 /// `key` (its virtual time), in time order.
 fn read_lines(path: &Path, key: &str, what: &str) -> Res<Vec<Value>> {
-    let lines = index_lines(path, key, what)?;
-    Ok((0..lines.len()).filter_map(|i| lines.get(i)).collect())
+    let mut out = Vec::new();
+    each_line(path, key, what, |v, _, _| out.push(v))?;
+    Ok(out)
 }
 
 /// The same, kept as text with each line's time and place (each line checked once).
 fn index_lines(path: &Path, key: &str, what: &str) -> Res<Lines> {
+    let mut at = Vec::new();
+    let text = each_line(path, key, what, |_, t, range| at.push((t, range)))?;
+    Ok(Lines::new(text, at))
+}
+
+/// Checks each line of `path` and hands it on, parsed, with its time and place; the
+/// file's text (empty when the file is absent).
+fn each_line(path: &Path, key: &str, what: &str, mut line_read: impl FnMut(Value, u64, std::ops::Range<usize>)) -> Res<String> {
     let text = match std::fs::read_to_string(path) {
         Ok(t) => t,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Lines::default()),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(String::new()),
         Err(e) => return Err(format!("{}: {}", path.display(), io_reason(&e))),
     };
-    let mut at: Vec<(u64, std::ops::Range<usize>)> = Vec::new();
-    let mut offset = 0;
+    let (mut offset, mut last) = (0, None);
     for (i, line) in text.split('\n').enumerate() {
         let range = offset..offset + line.len();
         offset = range.end + 1;
@@ -250,10 +258,11 @@ fn index_lines(path: &Path, key: &str, what: &str) -> Res<Lines> {
         let here = format!("{}:{}", path.display(), i + 1);
         let v: Value = serde_json::from_str(line).map_err(|e| format!("{here}: not a {what} record: {e}"))?;
         let t = v[key].as_u64().ok_or_else(|| format!("{here}: not a {what} record: it needs \"{key}\""))?;
-        if at.last().is_some_and(|l| l.0 > t) {
+        if last.is_some_and(|l| l > t) {
             return Err(format!("{here}: time goes back ({t} ms)"));
         }
-        at.push((t, range));
+        last = Some(t);
+        line_read(v, t, range);
     }
-    Ok(Lines::new(text, at))
+    Ok(text)
 }

@@ -65,7 +65,13 @@ fn refuse<R>(name: &'static str, caller: usize, errno: i32, failed: R, call: imp
 
 fn warn_once(name: &'static str) {
     static TOLD: Mutex<Vec<&'static str>> = Mutex::new(Vec::new());
-    let first = TOLD.lock().map(|mut told| !told.contains(&name) && (told.push(name), true).1).unwrap_or(false);
+    let first = TOLD.lock().is_ok_and(|mut told| {
+        let first = !told.contains(&name);
+        if first {
+            told.push(name);
+        }
+        first
+    });
     if let (true, Some(rt)) = (first, Runtime::get()) {
         let who = crate::object::current().map_or("a thread of an object".to_string(), |o| format!("object `{}`", o.name()));
         rt.diag.warn(&format!("{who} called {name}(), which the robot does not have (object-model 1.5): refused"));
@@ -164,21 +170,23 @@ thread_local! {
 
 const NO_LOADER: &std::ffi::CStr = c"dlopen: OPEN-R objects cannot load libraries (the robot has no dynamic loader; link the code into the object)";
 
-unsafe extern "C" fn dlopen(file: C, flags: c_int, _: usize, _: usize, _: usize, caller: usize) -> P {
+/// `refuse` for the loader: a refusal also leaves its text for `dlerror`.
+fn refuse_load(name: &'static str, caller: usize, call: impl FnOnce() -> P) -> P {
     if is_objects(caller) {
         REFUSED.with(|r| r.set(true));
     }
-    refuse("dlopen", caller, libc::ENOSYS, null_mut(), || match libc_dlopen() {
+    refuse(name, caller, libc::ENOSYS, null_mut(), call)
+}
+
+unsafe extern "C" fn dlopen(file: C, flags: c_int, _: usize, _: usize, _: usize, caller: usize) -> P {
+    refuse_load("dlopen", caller, || match libc_dlopen() {
         // SAFETY: the caller's arguments for glibc's `dlopen`.
         Some(f) => unsafe { f(file, flags) },
         None => fail(libc::ENOSYS, null_mut()),
     })
 }
 unsafe extern "C" fn dlmopen(ns: c_long, file: C, flags: c_int, _: usize, _: usize, caller: usize) -> P {
-    if is_objects(caller) {
-        REFUSED.with(|r| r.set(true));
-    }
-    refuse("dlmopen", caller, libc::ENOSYS, null_mut(), || call!("dlmopen", null_mut(), fn(c_long, C, c_int) -> P, ns, file, flags))
+    refuse_load("dlmopen", caller, || call!("dlmopen", null_mut(), fn(c_long, C, c_int) -> P, ns, file, flags))
 }
 /// After a refused `dlopen`, its text once (as dlerror gives each error once); else libc's.
 unsafe extern "C" fn dlerror(_: usize, _: usize, _: usize, _: usize, _: usize, caller: usize) -> *const c_char {

@@ -161,11 +161,11 @@ pub fn merge_rows(old: &str, table: &str, note: &str) -> String {
             last_row = Some(out.len());
         }
     }
-    let at = last_row.unwrap_or(out.len());
     let added: Vec<String> = fresh.iter().zip(&used).filter(|(_, u)| !**u).map(|((_, l), _)| l.to_string()).collect();
+    let at = last_row.unwrap_or(out.len());
+    let after = at + added.len();
     out.splice(at..at, added);
-    let at = last_row.map_or(out.len(), |r| r + fresh.len() - used.iter().filter(|u| **u).count());
-    out.splice(at..at, [String::new(), note.to_string()]);
+    out.splice(after..after, [String::new(), note.to_string()]);
     out.join("\n") + "\n"
 }
 
