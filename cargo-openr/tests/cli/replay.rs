@@ -287,6 +287,8 @@ fn bad_recordings_are_clear_errors() {
     fails_with(&r, &[&format!("{}:1: the picture", r.join("camera.jsonl").display()), "000009.png is missing"]);
     let r = spoilt("view", "view.jsonl", "{\"t_ms\":32,\"targets\":{}}\n{\"targets\":{}}\n");
     fails_with(&r, &[&format!("{}:2: not a view record: it needs \"t_ms\"", r.join("view.jsonl").display())]);
+    let r = spoilt("viewback", "view.jsonl", "{\"t_ms\":64,\"targets\":{}}\n{\"t_ms\":32,\"targets\":{}}\n");
+    fails_with(&r, &[&format!("{}:2: time goes back (32 ms)", r.join("view.jsonl").display())]);
     let r = spoilt("viewjson", "view.jsonl", "[1,\n");
     fails_with(&r, &[&format!("{}:1: not a view record", r.join("view.jsonl").display())]);
     let r = spoilt("notrace", "trace.jsonl", "");
