@@ -21,5 +21,7 @@ fn main() {
     assert!(names.iter().any(|n| n == "open"), "no trampolines! block found");
     for sym in ["openr_runtime_api_v1", "openr_runtime_net_v1", "_exit", "_Exit", "pthread_create"].map(str::to_string).into_iter().chain(names) {
         println!("cargo:rustc-link-arg-bins=-Wl,--export-dynamic-symbol={sym}");
+        // The in-process tests (tests/in_process.rs) run sticks in the test executable.
+        println!("cargo:rustc-link-arg-tests=-Wl,--export-dynamic-symbol={sym}");
     }
 }

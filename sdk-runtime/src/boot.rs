@@ -100,7 +100,6 @@ pub fn is_rp_host_program(ms_dir: &Path) -> bool {
 
 /// Loads and runs the stick until it ends; returns how it ended.
 pub fn run(opts: &RunOptions) -> Result<Outcome> {
-    crate::net::configure(opts.net.clone());
     let stick = read_stick(opts)?;
     let signals = take_over_process(opts)?;
     let Stick { ms, robot, object_cfg_path, objects, connect_path, connections, duplicates, design_db, images, system_images, mic_pcm, trace } = stick;
@@ -124,7 +123,9 @@ pub fn run(opts: &RunOptions) -> Result<Outcome> {
         }
         Err(crate::lifecycle::Interrupted(sig)) => Ended::Signal(sig),
     };
-    end_run(rt, opts, ended, &booted, failures)
+    let outcome = end_run(rt, opts, ended, &booted, failures);
+    rt.retire();
+    outcome
 }
 
 /// What the stick holds, read (and checked) before anything starts.
@@ -225,6 +226,10 @@ fn install(
         sched,
         signal: std::sync::atomic::AtomicI32::new(0),
         links: Default::default(),
+        net: crate::net::NetState::new(opts.net.clone()),
+        gateway: Default::default(),
+        console: Default::default(),
+        internal_errors: std::sync::atomic::AtomicU32::new(0),
     }))
 }
 
@@ -268,10 +273,7 @@ fn start_services(rt: &'static Runtime, opts: &RunOptions) -> Result<()> {
         o.attach(rt)?;
     }
     let _ = rt.vr.observers.set(opts.observers.clone());
-    std::thread::Builder::new()
-        .name("openr-robot".into())
-        .spawn(move || crate::vr::run_frames(rt))
-        .map_err(|e| ErrorKind::Runtime(format!("cannot start the robot thread: {e}")))?;
+    crate::runtime::spawn("openr-robot", move || crate::vr::run_frames(rt)).map_err(|e| ErrorKind::Runtime(format!("cannot start the robot thread: {e}")))?;
     Ok(())
 }
 
@@ -290,8 +292,8 @@ fn end_run(rt: &'static Runtime, opts: &RunOptions, ended: Ended, booted: &[Arc<
         rt.sched.release();
         crate::lifecycle::shutdown(rt, booted, opts.watchdog, &mut failures);
     }
-    failures.0.extend(crate::gateway::failures());
-    let internal = crate::host_api::INTERNAL_ERRORS.load(std::sync::atomic::Ordering::Acquire);
+    failures.0.extend(crate::gateway::failures(rt));
+    let internal = rt.internal_errors.load(std::sync::atomic::Ordering::Acquire);
     if internal > 0 {
         failures.0.push(format!("{internal} call(s) into the runtime panicked (a bug of cargo-openr, said above)"));
     }
@@ -333,26 +335,24 @@ fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path
     let thread_name: String = host.file_stem().map_or("object".into(), |s| s.to_string_lossy().into_owned());
     let host = host.to_path_buf();
     let worker = slot.clone();
-    std::thread::Builder::new()
-        .name(thread_name)
-        .spawn(move || {
-            object::set_current(worker.clone());
-            crate::crash::arm_thread();
-            match Module::load(&host, &image, index) {
-                Ok(m) => {
-                    let _ = worker.module.set(m);
-                    name_thread(worker.name());
-                    let _ = done_tx.send(Ok(()));
-                }
-                Err(e) => {
-                    let _ = done_tx.send(Err(e));
-                    return;
-                }
+    crate::runtime::spawn(thread_name, move || {
+        object::set_current(worker.clone());
+        crate::crash::arm_thread();
+        match Module::load(&host, &image, index) {
+            Ok(m) => {
+                let _ = worker.module.set(m);
+                name_thread(worker.name());
+                let _ = done_tx.send(Ok(()));
             }
-            drop(image);
-            crate::object::run_loop(&worker, rx, |m| rt.diag.warn(&m));
-        })
-        .map_err(|e| ErrorKind::Runtime(format!("cannot start a thread for {ms_path}: {e}")))?;
+            Err(e) => {
+                let _ = done_tx.send(Err(e));
+                return;
+            }
+        }
+        drop(image);
+        crate::object::run_loop(&worker, rx, |m| rt.diag.warn(&m));
+    })
+    .map_err(|e| ErrorKind::Runtime(format!("cannot start a thread for {ms_path}: {e}")))?;
     done_rx.recv().unwrap_or_else(|_| Err(Error::load(ms_path, "the loading thread died")))?;
     rt.diag.info(&format!("loaded {} as `{}` (oid {:08x})", slot.bin, slot.name(), slot.oid));
     Ok(())
@@ -389,16 +389,14 @@ fn wait_for_end(rt: &Runtime, run_for: Option<Duration>) -> Ended {
 /// Collects SIGINT/SIGTERM/SIGHUP (into `rt.signal`, seen by every phase, the boot
 /// included) and SIGUSR1 (the pause button) on a thread of its own.
 fn watch_signals(rt: &'static Runtime, signals: crate::signals::Termination) -> Result<()> {
-    std::thread::Builder::new()
-        .name("openr-signals".into())
-        .spawn(move || loop {
-            match signals.wait(Duration::from_secs(1)) {
-                Some(libc::SIGUSR1) => press_pause_button(rt),
-                Some(sig) => rt.signal.store(sig, std::sync::atomic::Ordering::Release),
-                None => {}
-            }
-        })
-        .map_err(|e| ErrorKind::Runtime(format!("cannot start the signal thread: {e}")))?;
+    crate::runtime::spawn("openr-signals", move || loop {
+        match signals.wait(Duration::from_secs(1)) {
+            Some(libc::SIGUSR1) => press_pause_button(rt),
+            Some(sig) => rt.signal.store(sig, std::sync::atomic::Ordering::Release),
+            None => {}
+        }
+    })
+    .map_err(|e| ErrorKind::Runtime(format!("cannot start the signal thread: {e}")))?;
     Ok(())
 }
 

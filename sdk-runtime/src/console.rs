@@ -45,16 +45,34 @@ pub mod input {
     use std::sync::Mutex;
     use std::time::{Duration, Instant};
 
+    /// fd 0 is the pump's pipe (the process has one stdin, whatever runs in it).
     static TAKEN: AtomicBool = AtomicBool::new(false);
-    /// Each object thread's kernel tid, by object index (its first thread: the one
-    /// that runs its messages).
-    static TIDS: Mutex<Vec<(usize, libc::pid_t)>> = Mutex::new(Vec::new());
-    /// Objects found blocked on the console, with the message count at that moment:
-    /// still blocked while they have not finished that message.
-    static BLOCKED: Mutex<Vec<(usize, u64)>> = Mutex::new(Vec::new());
     const MAX_OBJECTS: usize = 128;
-    /// Messages each object has finished (`run_loop`), by index.
-    static HANDLED: [AtomicU64; MAX_OBJECTS] = [const { AtomicU64::new(0) }; MAX_OBJECTS];
+
+    /// What one run knows of its objects and the console, by object index.
+    pub struct Watch {
+        /// Each object thread's kernel tid (its first thread: the one that runs its
+        /// messages).
+        tids: Mutex<Vec<(usize, libc::pid_t)>>,
+        /// Objects found blocked on the console, with the message count at that moment:
+        /// still blocked while they have not finished that message.
+        blocked: Mutex<Vec<(usize, u64)>>,
+        /// Messages each object has finished (`run_loop`).
+        handled: [AtomicU64; MAX_OBJECTS],
+        /// Busy objects with their message count and since when they were seen busy in it.
+        busy: Mutex<Vec<(usize, u64, Instant)>>,
+    }
+
+    impl Default for Watch {
+        fn default() -> Watch {
+            Watch {
+                tids: Mutex::new(Vec::new()),
+                blocked: Mutex::new(Vec::new()),
+                handled: std::array::from_fn(|_| AtomicU64::new(0)),
+                busy: Mutex::new(Vec::new()),
+            }
+        }
+    }
 
     /// Puts the never-ending pipe on fd 0 (once per process; not for a terminal).
     pub fn take_over_stdin() {
@@ -108,25 +126,27 @@ pub mod input {
         unsafe { libc::close(real) };
     }
 
-    /// Called on each object's thread before it runs object code.
-    pub fn register_thread(index: usize) {
-        // SAFETY: gettid has no preconditions.
-        let tid = unsafe { libc::gettid() };
-        let mut t = TIDS.lock().unwrap_or_else(|p| p.into_inner());
-        if !t.iter().any(|(i, _)| *i == index) {
-            t.push((index, tid));
+    impl Watch {
+        /// Called on each object's thread before it runs object code.
+        pub fn register_thread(&self, index: usize) {
+            // SAFETY: gettid has no preconditions.
+            let tid = unsafe { libc::gettid() };
+            let mut t = self.tids.lock().unwrap_or_else(|p| p.into_inner());
+            if !t.iter().any(|(i, _)| *i == index) {
+                t.push((index, tid));
+            }
         }
-    }
 
-    /// An object finished a message.
-    pub fn handled(index: usize) {
-        if let Some(c) = HANDLED.get(index) {
-            c.fetch_add(1, Ordering::Relaxed);
+        /// An object finished a message.
+        pub fn handled(&self, index: usize) {
+            if let Some(c) = self.handled.get(index) {
+                c.fetch_add(1, Ordering::Relaxed);
+            }
         }
-    }
 
-    fn handled_count(index: usize) -> Option<u64> {
-        HANDLED.get(index).map(|c| c.load(Ordering::Relaxed))
+        fn handled_count(&self, index: usize) -> Option<u64> {
+            self.handled.get(index).map(|c| c.load(Ordering::Relaxed))
+        }
     }
 
     /// Bytes waiting in the console pipe.
@@ -139,67 +159,67 @@ pub mod input {
         n
     }
 
-    /// Busy objects with their message count and since when they were seen busy in it.
-    static BUSY: Mutex<Vec<(usize, u64, Instant)>> = Mutex::new(Vec::new());
     /// How long an object runs one message before its thread is looked at.
     const PROBE_AFTER: Duration = Duration::from_millis(1);
 
-    /// Whether the busy object `index` waits for console input that has not come (for
-    /// the frame thread: such an object is idle, as one sleeping on virtual time is).
-    /// Cheap once known, until it finishes that message or input arrives; otherwise the
-    /// thread's current system call is looked at (`/proc/self/task/TID/syscall`: read
-    /// on fd 0) once the object has been in one message for `PROBE_AFTER`.
-    pub fn blocked_reading(index: usize) -> bool {
-        check(index, false)
-    }
-
-    /// The same, looking at the thread at once (the shutdown sequence: a blocked
-    /// object gets no Stop, and no timeout is waited out).
-    pub fn waits_for_input(index: usize) -> bool {
-        check(index, true)
-    }
-
-    fn check(index: usize, at_once: bool) -> bool {
-        if !TAKEN.load(Ordering::Acquire) {
-            return false;
+    impl Watch {
+        /// Whether the busy object `index` waits for console input that has not come (for
+        /// the frame thread: such an object is idle, as one sleeping on virtual time is).
+        /// Cheap once known, until it finishes that message or input arrives; otherwise the
+        /// thread's current system call is looked at (`/proc/self/task/TID/syscall`: read
+        /// on fd 0) once the object has been in one message for `PROBE_AFTER`.
+        pub fn blocked_reading(&self, index: usize) -> bool {
+            self.check(index, false)
         }
-        let Some(now) = handled_count(index) else { return false };
-        let known = BLOCKED.lock().unwrap_or_else(|p| p.into_inner()).iter().any(|&(i, h)| i == index && h == now);
-        if known {
-            return pending_input() == 0;
+
+        /// The same, looking at the thread at once (the shutdown sequence: a blocked
+        /// object gets no Stop, and no timeout is waited out).
+        pub fn waits_for_input(&self, index: usize) -> bool {
+            self.check(index, true)
         }
-        if !at_once {
-            let mut busy = BUSY.lock().unwrap_or_else(|p| p.into_inner());
-            match busy.iter_mut().find(|(i, _, _)| *i == index) {
-                Some(b) if b.1 == now => {
-                    if b.2.elapsed() < PROBE_AFTER {
+
+        fn check(&self, index: usize, at_once: bool) -> bool {
+            if !TAKEN.load(Ordering::Acquire) {
+                return false;
+            }
+            let Some(now) = self.handled_count(index) else { return false };
+            let known = self.blocked.lock().unwrap_or_else(|p| p.into_inner()).iter().any(|&(i, h)| i == index && h == now);
+            if known {
+                return pending_input() == 0;
+            }
+            if !at_once {
+                let mut busy = self.busy.lock().unwrap_or_else(|p| p.into_inner());
+                match busy.iter_mut().find(|(i, _, _)| *i == index) {
+                    Some(b) if b.1 == now => {
+                        if b.2.elapsed() < PROBE_AFTER {
+                            return false;
+                        }
+                    }
+                    Some(b) => {
+                        *b = (index, now, Instant::now());
+                        return false;
+                    }
+                    None => {
+                        busy.push((index, now, Instant::now()));
                         return false;
                     }
                 }
-                Some(b) => {
-                    *b = (index, now, Instant::now());
-                    return false;
-                }
-                None => {
-                    busy.push((index, now, Instant::now()));
-                    return false;
-                }
             }
+            if pending_input() != 0 {
+                return false;
+            }
+            let tid = self.tids.lock().unwrap_or_else(|p| p.into_inner()).iter().find(|(i, _)| *i == index).map(|(_, t)| *t);
+            let Some(tid) = tid else { return false };
+            let Ok(text) = std::fs::read_to_string(format!("/proc/self/task/{tid}/syscall")) else { return false };
+            let mut f = text.split_whitespace();
+            // read(2) is system call 0 on x86-64; its first argument the descriptor.
+            let blocked = f.next() == Some("0") && f.next() == Some("0x0");
+            if blocked {
+                let mut b = self.blocked.lock().unwrap_or_else(|p| p.into_inner());
+                b.retain(|(i, _)| *i != index);
+                b.push((index, now));
+            }
+            blocked
         }
-        if pending_input() != 0 {
-            return false;
-        }
-        let tid = TIDS.lock().unwrap_or_else(|p| p.into_inner()).iter().find(|(i, _)| *i == index).map(|(_, t)| *t);
-        let Some(tid) = tid else { return false };
-        let Ok(text) = std::fs::read_to_string(format!("/proc/self/task/{tid}/syscall")) else { return false };
-        let mut f = text.split_whitespace();
-        // read(2) is system call 0 on x86-64; its first argument the descriptor.
-        let blocked = f.next() == Some("0") && f.next() == Some("0x0");
-        if blocked {
-            let mut b = BLOCKED.lock().unwrap_or_else(|p| p.into_inner());
-            b.retain(|(i, _)| *i != index);
-            b.push((index, now));
-        }
-        blocked
     }
 }

@@ -25,14 +25,12 @@ use crate::runtime::Runtime;
 pub fn serve(rt: &'static Runtime, path: &Path) -> Result<()> {
     let _ = std::fs::remove_file(path);
     let listener = UnixListener::bind(path).map_err(|e| Error::io(path, e))?;
-    std::thread::Builder::new()
-        .name("openr-control".into())
-        .spawn(move || {
-            for conn in listener.incoming().flatten() {
-                let _ = std::thread::Builder::new().name("openr-control-client".into()).spawn(move || client(rt, conn));
-            }
-        })
-        .map_err(|e| Error::io(path, e))?;
+    crate::runtime::spawn("openr-control", move || {
+        for conn in listener.incoming().flatten() {
+            let _ = crate::runtime::spawn("openr-control-client", move || client(rt, conn));
+        }
+    })
+    .map_err(|e| Error::io(path, e))?;
     Ok(())
 }
 

@@ -42,10 +42,12 @@ pub fn panicked(function: &str, payload: Box<dyn std::any::Any + Send>) {
     let who = object::current().map_or_else(|| "a thread that is not an object's".to_string(), |o| format!("object `{}`", o.name()));
     let msg = format!("internal error in cargo-openr: the runtime's `{function}` (called by {who}) panicked: {what}");
     match rt() {
-        Some(rt) => rt.diag.error(&msg),
+        Some(rt) => {
+            rt.diag.error(&msg);
+            rt.internal_errors.fetch_add(1, Ordering::AcqRel);
+        }
         None => eprintln!("error: {msg}"),
     }
-    INTERNAL_ERRORS.fetch_add(1, Ordering::AcqRel);
 }
 
 /// Test hook for the boundary: `OPENR_INJECT_PANIC=robot_design` makes that call
@@ -56,9 +58,6 @@ fn inject_panic(function: &str) {
         panic!("injected by OPENR_INJECT_PANIC={function}");
     }
 }
-
-/// Panics stopped at the boundary so far (a non-zero count fails the run).
-pub static INTERNAL_ERRORS: std::sync::atomic::AtomicU32 = std::sync::atomic::AtomicU32::new(0);
 
 /// Keeps the table alive in the final link (referenced from the boot code).
 pub fn api_table() -> *const HostApi {

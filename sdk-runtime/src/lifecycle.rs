@@ -184,7 +184,7 @@ pub fn shutdown(rt: &Runtime, booted: &[Arc<ObjectSlot>], watchdog: Duration, fa
             if slot.is_stopped() || gone.contains(&slot.index) {
                 continue;
             }
-            if crate::console::input::waits_for_input(slot.index) {
+            if rt.console.waits_for_input(slot.index) {
                 // Single-threaded, it cannot take a message while it waits (the robot's
                 // objects neither): no Stop/Destroy, no watchdog to wait out.
                 if sel == SEL_STOP {

@@ -9,40 +9,60 @@ use openr_ipstack::{EncodeFn, Net, NetOptions, Request};
 
 use crate::runtime::Runtime;
 
-pub const ABI_VERSION: u32 = openr_sys::NET_ABI_VERSION;
-
-static NET: OnceLock<&'static Net> = OnceLock::new();
-static OPTIONS: OnceLock<NetOptions> = OnceLock::new();
-
-/// The run's network settings, given before any object loads (the IPStack starts on
-/// first use and reads them then).
-pub fn configure(opts: NetOptions) {
-    let _ = OPTIONS.set(opts);
+/// A run's network settings and its IPStack.
+pub struct NetState {
+    options: NetOptions,
+    stack: OnceLock<&'static Net>,
 }
 
-/// The run's network settings (defaults before `configure`): the TCP gateways of
+impl NetState {
+    /// The settings of a run, given before any object loads (the IPStack starts on first
+    /// use and reads them then).
+    pub fn new(options: NetOptions) -> NetState {
+        NetState { options, stack: OnceLock::new() }
+    }
+
+    pub fn options(&self) -> &NetOptions {
+        &self.options
+    }
+}
+
+/// The calling thread's network settings (defaults outside a run): the TCP gateways of
 /// Remote Processing use them without starting the IPStack.
 pub fn options() -> NetOptions {
-    OPTIONS.get().cloned().unwrap_or_default()
+    Runtime::get().map(|rt| rt.net.options.clone()).unwrap_or_default()
 }
 
-/// The IPStack of this process, started on first use (its poll thread included).
+/// The calling thread's IPStack, started on first use (its poll thread included); a
+/// call outside any run gets a stack of its own, with the default settings.
 pub fn net() -> &'static Net {
-    NET.get_or_init(|| Net::start(OPTIONS.get_or_init(Default::default), Arc::new(RuntimeHost)).expect("start the IPStack (eventfd, its thread)"))
+    static DETACHED: OnceLock<&'static Net> = OnceLock::new();
+    let start = |options: &NetOptions, rt| Net::start(options, Arc::new(RuntimeHost(rt))).expect("start the IPStack (eventfd, its thread)");
+    match Runtime::get() {
+        Some(rt) => rt.net.stack.get_or_init(|| start(&rt.net.options, Some(rt))),
+        None => DETACHED.get_or_init(|| start(&NetOptions::default(), None)),
+    }
 }
 
-/// The stack's view of the running runtime (none yet, or none any more: replies are
-/// dropped, the stick's files are not there, messages go to stderr).
-pub struct RuntimeHost;
+/// The stack's view of its runtime (none: replies are dropped, the stick's files are not
+/// there, messages go to stderr).
+pub struct RuntimeHost(pub Option<&'static Runtime>);
+
+impl RuntimeHost {
+    /// The calling thread's runtime's.
+    pub fn current() -> RuntimeHost {
+        RuntimeHost(Runtime::get())
+    }
+}
 
 impl openr_ipstack::Report for RuntimeHost {
     fn warn(&self, msg: &str) {
-        if let Some(rt) = Runtime::get() {
+        if let Some(rt) = self.0 {
             rt.diag.warn(msg);
         }
     }
     fn info(&self, line: &str) {
-        if !Runtime::get().is_some_and(|rt| rt.diag.quiet) {
+        if !self.0.is_some_and(|rt| rt.diag.quiet) {
             eprintln!("{line}");
         }
     }
@@ -53,12 +73,12 @@ impl openr_ipstack::Report for RuntimeHost {
 
 impl openr_ipstack::Host for RuntimeHost {
     fn send(&self, oid: usize, selector: u32, message: Vec<u8>) {
-        if let Some(rt) = Runtime::get() {
+        if let Some(rt) = self.0 {
             let _ = rt.send(oid, selector, message);
         }
     }
     fn read_stick(&self, path: &str) -> Option<String> {
-        Runtime::get()?.ms.existing(path).and_then(|p| std::fs::read_to_string(p).ok())
+        self.0?.ms.existing(path).and_then(|p| std::fs::read_to_string(p).ok())
     }
 }
 
@@ -70,11 +90,6 @@ pub use openr_sys::openr_net_api as NetApi;
 #[no_mangle]
 #[used]
 pub static openr_runtime_net_v1: NetApi = openr_sys::net_table!(crate::net, crate::host_api::panicked);
-
-/// Keeps the table in the final link; call it from anything that always runs.
-pub fn init() -> *const NetApi {
-    std::hint::black_box(&openr_runtime_net_v1)
-}
 
 pub(crate) fn endpoint_protocol(endpoint: u32) -> i32 {
     net().endpoint_protocol(endpoint)

@@ -62,7 +62,9 @@ pub fn current() -> Option<Arc<ObjectSlot>> {
 
 pub(crate) fn set_current(slot: Arc<ObjectSlot>) {
     RUNNING.with(|r| r.set((slot.index, u32::MAX)));
-    crate::console::input::register_thread(slot.index);
+    if let Some(rt) = crate::runtime::Runtime::get() {
+        rt.console.register_thread(slot.index);
+    }
     CURRENT_SLOT.with(|c| c.set(Arc::as_ptr(&slot)));
     CURRENT.with(|c| *c.borrow_mut() = Some(slot));
 }
@@ -114,7 +116,8 @@ fn recv<T>(rx: &Receiver<T>) -> Option<T> {
 /// The object's message loop; returns when the runtime drops its sender.
 pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(String)) {
     let module = slot.module.get().expect("loaded before the loop starts");
-    let sched = &crate::runtime::Runtime::get().expect("objects run in a runtime").sched;
+    let rt = crate::runtime::Runtime::get().expect("objects run in a runtime");
+    let sched = &rt.sched;
     while let Some(mut env) = recv(&rx) {
         sched.begin(slot.index, env.selector);
         let Some(entry) = module.entry(env.selector) else {
@@ -133,7 +136,7 @@ pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(
         // message bytes plus 64 bytes of slack, live for the call.
         unsafe { entry(env.data.as_mut_ptr().cast()) };
         RUNNING.with(|r| r.set((slot.index, u32::MAX)));
-        crate::console::input::handled(slot.index);
+        rt.console.handled(slot.index);
         // A call whose entry returned without Reply/Return gets an empty answer, so the
         // caller is never left waiting forever.
         reply_current(&[]);

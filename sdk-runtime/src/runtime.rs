@@ -1,10 +1,18 @@
-//! The "system" side of OPEN-R: the process-wide state every object reaches through the
-//! host API — objects by OID, the service registry, shared memory, the clock, design
+//! The "system" side of OPEN-R: the state of one robot that every object reaches through
+//! the host API — objects by OID, the service registry, shared memory, the clock, design
 //! data and power state — and the two message primitives, send and call.
+//!
+//! A [`Runtime`] is an instance: a process may run several sticks at once (the tests do).
+//! Object code calls the host API with no context argument (the C ABI of the robot), so
+//! each thread knows the runtime it works for ([`Runtime::enter`]): the object threads,
+//! the runtime's own ([`spawn`]) and the threads objects start (`crash::exits`). A thread
+//! that was given none (a library's helper thread) reaches the process's runtime while
+//! there is exactly one.
+use std::cell::Cell;
 use std::ffi::CString;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, RecvTimeoutError};
-use std::sync::{Arc, Mutex, OnceLock, RwLock};
+use std::sync::{Arc, Mutex, RwLock};
 use std::time::Duration;
 
 use crate::clock::Clock;
@@ -123,12 +131,41 @@ pub struct Runtime {
     pub signal: std::sync::atomic::AtomicI32,
     /// CONNECT.CFG's made connections and their message counts (the view shows them).
     pub links: crate::links::Links,
+    /// This run's network settings and its IPStack, started on first use (net.rs).
+    pub net: crate::net::NetState,
+    /// The TCP gateway of Remote Processing, when the stick has one (gateway/).
+    pub gateway: crate::gateway::State,
+    /// Which objects wait for console input (console.rs).
+    pub console: crate::console::input::Watch,
+    /// Panics stopped at the host API's boundary (a non-zero count fails the run).
+    pub internal_errors: std::sync::atomic::AtomicU32,
 }
 
 /// `Runtime::fatal` before any `OPENR::Fatal` (ofatalUNDEF is u32::MAX, a real value).
 pub const NO_FATAL: u32 = 0xFFFF_FFFE;
 
-static RUNTIME: OnceLock<Runtime> = OnceLock::new();
+thread_local! {
+    /// The runtime this thread works for.
+    static CURRENT: Cell<Option<&'static Runtime>> = const { Cell::new(None) };
+}
+
+/// The runtimes of this process whose run has not ended.
+static LIVE: Mutex<Vec<&'static Runtime>> = Mutex::new(Vec::new());
+
+/// Starts a thread that works for the calling thread's runtime (if it has one).
+pub fn spawn<F, T>(name: impl Into<String>, f: F) -> std::io::Result<std::thread::JoinHandle<T>>
+where
+    F: FnOnce() -> T + Send + 'static,
+    T: Send + 'static,
+{
+    let rt = Runtime::get();
+    std::thread::Builder::new().name(name.into()).spawn(move || {
+        if let Some(rt) = rt {
+            rt.enter();
+        }
+        f()
+    })
+}
 
 /// Why a message could not be delivered or answered.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -146,16 +183,39 @@ fn enqueue(sched: &crate::sched::Sched, slot: &ObjectSlot, env: Envelope) -> Res
 }
 
 impl Runtime {
-    /// Installs the process's runtime; there is one per process (the host API is global).
+    /// Makes `rt` a live runtime of this process, the calling thread's. It is never
+    /// freed: an object blocked for good (a Call after `OPENR::Fatal`, a read of the
+    /// console) keeps its thread, and that thread its runtime, to the process's end.
     pub fn install(rt: Runtime) -> &'static Runtime {
-        if RUNTIME.set(rt).is_err() {
-            panic!("one OPEN-R runtime per process");
-        }
-        RUNTIME.get().expect("just set")
+        let rt: &'static Runtime = Box::leak(Box::new(rt));
+        LIVE.lock().unwrap_or_else(|p| p.into_inner()).push(rt);
+        rt.enter();
+        rt
     }
 
+    /// The run ended: the calling thread and threads that were given no runtime no
+    /// longer reach this one.
+    pub fn retire(&'static self) {
+        LIVE.lock().unwrap_or_else(|p| p.into_inner()).retain(|r| !std::ptr::eq(*r, self));
+        CURRENT.with(|c| {
+            if c.get().is_some_and(|r| std::ptr::eq(r, self)) {
+                c.set(None);
+            }
+        });
+    }
+
+    /// The calling thread works for this runtime from now on.
+    pub fn enter(&'static self) {
+        CURRENT.with(|c| c.set(Some(self)));
+    }
+
+    /// The runtime the calling thread works for; on a thread given none, the process's
+    /// only live runtime.
     pub fn get() -> Option<&'static Runtime> {
-        RUNTIME.get()
+        CURRENT.with(|c| c.get()).or_else(|| match LIVE.lock().unwrap_or_else(|p| p.into_inner()).as_slice() {
+            [only] => Some(*only),
+            _ => None,
+        })
     }
 
     pub fn object(&self, oid: usize) -> Option<Arc<ObjectSlot>> {

@@ -161,7 +161,7 @@ impl Sched {
     fn check_watchdog(&self, s: &mut State) {
         let limit = *self.watchdog.lock().unwrap_or_else(|p| p.into_inner());
         if let (Some(Holder::Object(i)), Some(t)) = (s.holder, s.held_since) {
-            if t.elapsed() >= CONSOLE_PROBE && crate::console::input::blocked_reading(i) {
+            if t.elapsed() >= CONSOLE_PROBE && crate::runtime::Runtime::get().is_some_and(|rt| rt.console.blocked_reading(i)) {
                 s.detached.insert(i);
                 s.give_back();
                 self.changed_locked(s);

@@ -118,6 +118,7 @@ fn real_pthread_create() -> CreateFn {
 }
 
 struct Adopted {
+    rt: Option<&'static crate::runtime::Runtime>,
     slot: std::sync::Arc<crate::object::ObjectSlot>,
     start: StartFn,
     arg: *mut c_void,
@@ -127,6 +128,9 @@ extern "C" fn adopted_start(p: *mut c_void) -> *mut c_void {
     // SAFETY: boxed by pthread_create below, for this thread only.
     let a = unsafe { Box::from_raw(p as *mut Adopted) };
     let index = a.slot.index;
+    if let Some(rt) = a.rt {
+        rt.enter();
+    }
     crate::object::set_current(a.slot);
     crate::object::RUNNING.with(|r| r.set((index, super::OWN_THREAD)));
     super::arm_thread();
@@ -143,7 +147,7 @@ pub unsafe extern "C" fn pthread_create(thread: *mut libc::pthread_t, attr: *con
     let from_object = crate::object::current().filter(|_| super::frames::place(start as usize).is_some_and(|p| !p.is_main_program()));
     match from_object {
         Some(slot) => {
-            let boxed = Box::into_raw(Box::new(Adopted { slot, start, arg }));
+            let boxed = Box::into_raw(Box::new(Adopted { rt: crate::runtime::Runtime::get(), slot, start, arg }));
             // SAFETY: the caller's arguments (pthread_create's contract); `boxed` is a live Box that
             // `adopted_start` takes ownership of on the new thread.
             let r = unsafe { real(thread, attr, adopted_start, boxed.cast()) };

@@ -191,7 +191,7 @@ pub fn serve(link: Arc<Link>, listener: TcpListener) {
                 let Some(id) = link.install(&s) else { continue };
                 super::note(&format!("{}: channel {}: host {peer} connected ({} at {})", link.place, link.hello.port, far.name, far.place));
                 let link = link.clone();
-                let _ = std::thread::Builder::new().name("openr-gw-read".into()).spawn(move || {
+                let _ = crate::runtime::spawn("openr-gw-read", move || {
                     if link.hello.suffix == b'P' {
                         super::proxy::serve_calls(&mut s);
                         link.clear(id);

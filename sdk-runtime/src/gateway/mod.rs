@@ -38,7 +38,31 @@ pub fn builtin_name(image: &[u8]) -> Option<&str> {
 
 pub use setup::{channels, module, Channel, Peer};
 
-/// What the gateway of this process was set up with (one gateway per process).
+/// The gateway of one run (a run has at most one, as the robot has one TCPGateway).
+#[derive(Default)]
+pub struct State {
+    setup: OnceLock<Setup>,
+    failures: Mutex<Vec<String>>,
+    /// The host's `tcpGateway` (else the robot's `TCPGateway`).
+    host: std::sync::atomic::AtomicBool,
+    /// The host gateway's `!ROBOT_PROXY` line, when it has one.
+    client: OnceLock<Arc<Link>>,
+    /// The proxy was found unreachable (said once).
+    unreachable: std::sync::atomic::AtomicBool,
+    /// The robot's design as its proxy answered.
+    design: OnceLock<std::ffi::CString>,
+}
+
+/// The calling thread's run's gateway.
+fn state() -> Option<&'static State> {
+    Runtime::get().map(|rt| &rt.gateway)
+}
+
+fn setup() -> Option<&'static Setup> {
+    state()?.setup.get()
+}
+
+/// What the gateway was set up with.
 struct Setup {
     links: Vec<Arc<Link>>,
     /// Taken by the object's Start: what each line's thread does.
@@ -46,14 +70,12 @@ struct Setup {
     oid: OnceLock<usize>,
 }
 
-static SETUP: OnceLock<Setup> = OnceLock::new();
-static FAILURES: Mutex<Vec<String>> = Mutex::new(Vec::new());
-
-/// What the gateway found wrong in this run (the run fails with them): refused
+/// What the gateway found wrong in the run of `rt` (the run fails with them): refused
 /// pairings, and host channels that never reached the robot.
-pub fn failures() -> Vec<String> {
-    let mut out = FAILURES.lock().unwrap_or_else(|p| p.into_inner()).clone();
-    if let Some(s) = SETUP.get().filter(|_| setup::is_host()) {
+pub fn failures(rt: &Runtime) -> Vec<String> {
+    let state = &rt.gateway;
+    let mut out = state.failures.lock().unwrap_or_else(|p| p.into_inner()).clone();
+    if let Some(s) = state.setup.get().filter(|_| state.host.load(std::sync::atomic::Ordering::Acquire)) {
         // A proxy nobody called is no failure (HelloWorld-stubgen/RP has one, unused).
         for l in s.links.iter().filter(|l| l.hello.suffix != b'P' && !l.ever_connected.load(std::sync::atomic::Ordering::Acquire)) {
             if !out.iter().any(|f| f.starts_with(&l.place)) {
@@ -89,12 +111,14 @@ fn error(msg: &str) {
 /// An error that fails the run.
 fn fail(msg: &str) {
     error(msg);
-    FAILURES.lock().unwrap_or_else(|p| p.into_inner()).push(msg.to_string());
+    if let Some(state) = state() {
+        state.failures.lock().unwrap_or_else(|p| p.into_inner()).push(msg.to_string());
+    }
 }
 
 /// Queues an event for the gateway object: `u32 len, kind:u8, channel:u16, payload`.
 fn post(channel: usize, kind: u8, payload: &[u8]) {
-    let (Some(rt), Some(oid)) = (rt(), SETUP.get().and_then(|s| s.oid.get())) else { return };
+    let (Some(rt), Some(oid)) = (rt(), setup().and_then(|s| s.oid.get())) else { return };
     let mut m = Vec::with_capacity(7 + payload.len());
     m.extend_from_slice(&((3 + payload.len()) as u32).to_le_bytes());
     m.push(kind);
@@ -128,13 +152,13 @@ struct Gateway {
 
 impl Gateway {
     fn link(&self, k: usize) -> Option<&'static Arc<Link>> {
-        SETUP.get()?.links.get(k)
+        setup()?.links.get(k)
     }
 }
 
 impl Object for Gateway {
     fn init(ctx: &mut Context) -> Self {
-        let Some(setup) = SETUP.get() else { return Gateway { ends: Vec::new() } };
+        let Some(setup) = setup() else { return Gateway { ends: Vec::new() } };
         if let Some(me) = crate::object::current() {
             let _ = setup.oid.set(me.oid);
         }
@@ -159,7 +183,7 @@ impl Object for Gateway {
 
     /// The channels open now: the program is connected and running.
     fn start(&mut self, _ctx: &mut Context) {
-        if let Some(setup) = SETUP.get() {
+        if let Some(setup) = setup() {
             spawn_targets(setup, |_| true);
         }
     }

@@ -5,7 +5,6 @@
 //! Memory-only helpers (`NewCommandVectorData`, …) stay on the host: the vectors they
 //! make travel as data through the gateway channels.
 use std::net::TcpStream;
-use std::sync::OnceLock;
 use std::time::Duration;
 
 use super::link::Link;
@@ -24,17 +23,10 @@ pub const ROBOT_DESIGN: u8 = 8;
 /// How long a call waits for the proxy connection to come up.
 const CONNECT_WAIT: Duration = Duration::from_secs(10);
 
-/// The host gateway's `!ROBOT_PROXY` line, when it has one.
-static CLIENT: OnceLock<std::sync::Arc<Link>> = OnceLock::new();
-
-pub(super) fn set_client(link: std::sync::Arc<Link>) {
-    let _ = CLIENT.set(link);
-}
-
 /// Runs `api` on the robot: None when this run has no proxy (the call runs locally),
 /// else the reply (`[O_FAIL]` when the robot cannot be reached).
 pub fn call(api: u8, args: &[u8]) -> Option<Vec<u8>> {
-    let link = CLIENT.get()?;
+    let link = super::state()?.client.get()?;
     let mut req = vec![api];
     req.extend_from_slice(args);
     match link.exchange(wire::PROXY_CALL, &req, CONNECT_WAIT) {
@@ -47,8 +39,7 @@ pub fn call(api: u8, args: &[u8]) -> Option<Vec<u8>> {
 }
 
 fn once_unreachable(link: &Link) {
-    static SAID: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
-    if !SAID.swap(true, std::sync::atomic::Ordering::AcqRel) {
+    if !super::state().is_some_and(|s| s.unreachable.swap(true, std::sync::atomic::Ordering::AcqRel)) {
         super::warn(&format!("{}: the robot's OPEN-R API proxy is not reachable: OPENR:: calls of host objects return oFAIL", link.place));
     }
 }
@@ -57,14 +48,14 @@ fn once_unreachable(link: &Link) {
 /// during a run). None when this run has no proxy; Some(None) when the robot cannot be
 /// reached (then it is asked again next time).
 pub fn robot_design() -> Option<Option<&'static std::ffi::CStr>> {
-    static DESIGN: OnceLock<std::ffi::CString> = OnceLock::new();
-    if let Some(d) = DESIGN.get() {
+    let state = super::state()?;
+    if let Some(d) = state.design.get() {
         return Some(Some(d.as_c_str()));
     }
     let reply = call(ROBOT_DESIGN, &[])?;
     let (status, name) = split(&reply);
     let name = std::ffi::CString::new(name).ok().filter(|_| status == O_SUCCESS);
-    Some(name.map(|n| DESIGN.get_or_init(|| n).as_c_str()))
+    Some(name.map(|n| state.design.get_or_init(|| n).as_c_str()))
 }
 
 /// The status of a reply and the out-values after it.

@@ -5,14 +5,14 @@
 use std::collections::HashMap;
 use std::net::{Ipv4Addr, SocketAddrV4, TcpListener};
 use std::path::Path;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::Ordering;
 use std::sync::{Arc, Mutex, OnceLock};
 
 use openr_wrappers::rp::gwcfg::{self, GwLine};
 
 use super::link::{self, Link};
 use super::wire::Hello;
-use super::{Setup, HOST_GATEWAY, ROBOT_GATEWAY, SETUP};
+use super::{Setup, HOST_GATEWAY, ROBOT_GATEWAY};
 use crate::error::{ErrorKind, Result};
 use crate::loader::Module;
 use crate::runtime::Runtime;
@@ -24,15 +24,9 @@ pub enum Target {
     Connect(SocketAddrV4),
 }
 
-static HOST: AtomicBool = AtomicBool::new(false);
-
-pub fn is_host() -> bool {
-    HOST.load(Ordering::Acquire)
-}
-
 pub fn spawn(link: Arc<Link>, target: Target) {
     let name = format!("openr-gw-{}", link.hello.port);
-    let _ = std::thread::Builder::new().name(name).spawn(move || match target {
+    let _ = crate::runtime::spawn(name, move || match target {
         Target::Listen(l) => link::serve(link, l),
         Target::Connect(a) => link::connect(link, a),
     });
@@ -48,10 +42,11 @@ pub fn module(name: &str, bin: &Path) -> Result<Module> {
         HOST_GATEWAY => (true, "HOSTGW.CFG"),
         _ => return Err(crate::error::Error::load(bin, format!("names built-in object `{name}`, which this runtime does not have"))),
     };
-    if SETUP.get().is_some() {
+    let state = &rt.gateway;
+    if state.setup.get().is_some() {
         return Err(crate::error::Error::load(bin, "a second TCP gateway in one run (the robot has one TCPGateway)"));
     }
-    HOST.store(host, Ordering::Release);
+    state.host.store(host, Ordering::Release);
     let path = rt.ms.existing(&format!("/MS/OPEN-R/MW/CONF/{file}"));
     let lines = match &path {
         Some(p) => gwcfg::read(p).map_err(|e| err(e.to_string()))?,
@@ -61,14 +56,14 @@ pub fn module(name: &str, bin: &Path) -> Result<Module> {
         }
     };
     let shown = path.as_deref().map_or_else(|| file.to_string(), |p| p.display().to_string());
-    let net = NetConfig::new(&crate::net::options(), Arc::new(crate::net::RuntimeHost));
+    let net = NetConfig::new(&crate::net::options(), Arc::new(crate::net::RuntimeHost::current()));
     let (links, targets) = prepare(&shown, &lines, host, &net).map_err(err)?;
     if let Some(p) = links.iter().find(|l| l.hello.suffix == b'P').filter(|_| host) {
-        super::proxy::set_client(p.clone());
+        let _ = state.client.set(p.clone());
     }
     warn_shared_services(rt, &links);
     let targets = Mutex::new(targets.into_iter().map(Some).collect());
-    let _ = SETUP.set(Setup { links, targets, oid: OnceLock::new() });
+    let _ = state.setup.set(Setup { links, targets, oid: OnceLock::new() });
     Ok(Module::builtin(&super::ENTRY_TABLE, if host { "tcpGateway" } else { "TCPGateway" }))
 }
 
@@ -250,7 +245,7 @@ mod tests {
     /// The host side's refusal of `text` (no socket is opened on the host side).
     fn host_error(text: &str) -> String {
         let lines = gwcfg::parse("HOSTGW.CFG", text).expect("the line syntax is fine");
-        let net = NetConfig::new(&Default::default(), Arc::new(crate::net::RuntimeHost));
+        let net = NetConfig::new(&Default::default(), Arc::new(crate::net::RuntimeHost(None)));
         match prepare("HOSTGW.CFG", &lines, true, &net) {
             Ok(_) => panic!("accepted:\n{text}"),
             Err(e) => e,
@@ -271,7 +266,7 @@ mod tests {
         assert!(host_error(&many).ends_with("the gateway has as many service slots)"), "{}", host_error(&many));
         // Two robots may use the same port.
         let lines = gwcfg::parse("HOSTGW.CFG", "A.B.char.S 59002 127.0.0.1\nA.C.char.O 59002 127.0.0.2\n").unwrap();
-        assert!(prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), Arc::new(crate::net::RuntimeHost))).is_ok());
+        assert!(prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), Arc::new(crate::net::RuntimeHost(None)))).is_ok());
     }
 
     #[test]
@@ -287,7 +282,7 @@ mod tests {
         assert_eq!(ch[3].warnings(), ["dmin=3 dmax=2: expected 1 <= dmin <= dmax; the defaults dskip=0 dmin=1 dmax=1 are used"]);
         assert_eq!(ch[4].buf_ctrl(), Ok((0, 1, 1)));
         assert_eq!(ch[4].warnings(), ["unknown option `dfoo=1` ignored (known: dskip, dmin, dmax)"]);
-        let (links, _) = prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), Arc::new(crate::net::RuntimeHost))).unwrap();
+        let (links, _) = prepare("HOSTGW.CFG", &lines, true, &NetConfig::new(&Default::default(), Arc::new(crate::net::RuntimeHost(None)))).unwrap();
         let bufs: Vec<_> = links.iter().map(|l| l.buf_ctrl).collect();
         assert_eq!(bufs, [(1, 2, 8), (0, 1, 1), (0, 1, 1), (0, 1, 1), (0, 1, 1)], "only an observer line's valid options apply");
     }

@@ -376,17 +376,15 @@ pub fn serve(rt: &'static Runtime, opts: &PeerOptions) -> Result<()> {
 }
 
 fn spawn_acceptor(rt: &'static Runtime, what: &Path, accept: impl Fn() -> std::io::Result<Conn> + Send + 'static) -> Result<()> {
-    std::thread::Builder::new()
-        .name("openr-peer-listen".into())
-        .spawn(move || loop {
-            match accept() {
-                Ok(c) => {
-                    let _ = std::thread::Builder::new().name("openr-peer".into()).spawn(move || connection(rt, c));
-                }
-                Err(_) => std::thread::sleep(std::time::Duration::from_millis(10)),
+    crate::runtime::spawn("openr-peer-listen", move || loop {
+        match accept() {
+            Ok(c) => {
+                let _ = crate::runtime::spawn("openr-peer", move || connection(rt, c));
             }
-        })
-        .map_err(|e| Error::io(what, e))?;
+            Err(_) => std::thread::sleep(std::time::Duration::from_millis(10)),
+        }
+    })
+    .map_err(|e| Error::io(what, e))?;
     Ok(())
 }
 
@@ -423,7 +421,7 @@ fn connection(rt: &'static Runtime, conn: Conn) {
     let out = Arc::new(outbox::Outbox::default());
     {
         let out = out.clone();
-        let spawned = std::thread::Builder::new().name("openr-peer-write".into()).spawn(move || {
+        let spawned = crate::runtime::spawn("openr-peer-write", move || {
             let end = writer.try_clone().ok();
             // Only the writing side: a stalled peer is detached (with a warning) by the
             // next message the frame thread cannot queue, not by its reader seeing EOF.
