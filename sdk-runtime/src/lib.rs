@@ -2,9 +2,12 @@
 //!
 //! [`boot::run`] runs a Memory Stick tree: it loads each `.BIN` of OBJECT.CFG on a
 //! thread of its own and drives the OPEN-R life cycle; objects reach the runtime through
-//! [`host_api`] (`cxx/openr_host.h`). [`sdk_files`] carries the OPEN-R headers
-//! (`include/`) and the C++ surface (`cxx/`) that `cargo openr sdk install` writes into
-//! an SDK root, both written from the clean-room spec.
+//! [`host_api`] (`cxx/openr_host.h`). Each run is a [`runtime::Runtime`] instance of its
+//! own (objects, clock, scheduler, console, gateway, IPStack): a process may run several
+//! sticks at once, and every thread knows the runtime it works for. [`sdk_files`]
+//! (the `openr-sdk-payload` crate) carries the OPEN-R headers and the C++ surface that
+//! `cargo openr sdk install` writes into an SDK root, both written from the clean-room
+//! spec.
 //!
 //! ```
 //! use sdk_runtime::ms::is_eight_dot_three;
