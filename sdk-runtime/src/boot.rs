@@ -319,14 +319,13 @@ fn with_cfg_line(e: Error, cfg: &std::path::Path, line: usize) -> Error {
 /// Starts the object's thread, which loads the module (static constructors run there)
 /// and then serves messages.
 fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path::Path, image: Vec<u8>) -> Result<()> {
-    let (tx, rx) = mpsc::channel();
     let index = rt.objects.read().unwrap_or_else(|p| p.into_inner()).len();
     let slot = Arc::new(ObjectSlot {
         index,
         oid,
         bin: ms_path.to_string(),
         module: OnceLock::new(),
-        tx,
+        mailbox: Default::default(),
         stopped: AtomicBool::new(false),
         sleeping: AtomicBool::new(false),
     });
@@ -345,12 +344,13 @@ fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path
                 let _ = done_tx.send(Ok(()));
             }
             Err(e) => {
+                worker.mailbox.close();
                 let _ = done_tx.send(Err(e));
                 return;
             }
         }
         drop(image);
-        crate::object::run_loop(&worker, rx, |m| rt.diag.warn(&m));
+        crate::object::run_loop(&worker, |m| rt.diag.warn(&m));
     })
     .map_err(|e| ErrorKind::Runtime(format!("cannot start a thread for {ms_path}: {e}")))?;
     done_rx.recv().unwrap_or_else(|_| Err(Error::load(ms_path, "the loading thread died")))?;

@@ -147,7 +147,7 @@ pub(crate) fn self_name() -> *const c_char {
 pub(crate) unsafe fn send(dest: *mut c_void, selector: u32, msg: *const c_void, size: usize) -> i32 {
     let Some(rt) = rt() else { return -1 };
     // SAFETY: `msg` holds `size` readable bytes or is null (the host API's contract); copied at once.
-    let data = unsafe { bytes(msg, size) }.to_vec();
+    let data = object::message(unsafe { bytes(msg, size) });
     match rt.send(dest as usize, selector, data) {
         Ok(()) => 0,
         Err(_) => -1,
@@ -166,7 +166,7 @@ pub(crate) unsafe fn call(
 ) -> i32 {
     let Some(rt) = rt() else { return -1 };
     // SAFETY: `msg` holds `size` readable bytes or is null (the host API's contract); copied at once.
-    let data = unsafe { bytes(msg, size) }.to_vec();
+    let data = object::message(unsafe { bytes(msg, size) });
     let timeout = (timeout_ms > 0).then(|| Duration::from_millis(timeout_ms.into()));
     match rt.call(dest as usize, selector, data, timeout) {
         Ok(answer) => {
@@ -366,7 +366,7 @@ pub(crate) fn delete_design_data(id: u32) -> u32 {
 pub(crate) unsafe fn set_timer(dest: *mut c_void, selector: u32, msg: *const c_void, size: usize, after_ms: u32, period_ms: u32) -> u32 {
     let Some(rt) = rt() else { return 0 };
     // SAFETY: `msg` holds `size` readable bytes or is null (the host API's contract); copied at once.
-    let data = unsafe { bytes(msg, size) }.to_vec();
+    let data = object::message(unsafe { bytes(msg, size) });
     let period = (period_ms > 0).then(|| Duration::from_millis(period_ms.into()));
     rt.timers.add(rt.clock.since_boot(), dest as usize, selector, data, Duration::from_millis(after_ms.into()), period)
 }

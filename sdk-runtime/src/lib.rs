@@ -34,6 +34,7 @@ pub mod lifecycle;
 pub mod link_check;
 pub mod links;
 pub mod loader;
+pub mod mailbox;
 pub mod ms;
 pub mod net;
 pub mod object;

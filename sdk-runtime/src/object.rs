@@ -3,7 +3,7 @@
 //! (object-model 2.1).
 use std::cell::{Cell, RefCell};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::{Receiver, Sender, SyncSender};
+use std::sync::mpsc::{Receiver, SyncSender};
 use std::sync::{Arc, OnceLock};
 
 use crate::loader::Module;
@@ -18,6 +18,16 @@ pub struct Envelope {
     pub caller: Option<usize>,
 }
 
+/// Zero bytes after a message's own as its entry gets it (`run_loop`).
+const SLACK: usize = 64;
+
+/// A message's bytes, with room for the slack its receiver adds (no second allocation).
+pub(crate) fn message(bytes: &[u8]) -> Vec<u8> {
+    let mut v = Vec::with_capacity(bytes.len() + SLACK);
+    v.extend_from_slice(bytes);
+    v
+}
+
 /// Everything the runtime knows about one loaded object.
 pub struct ObjectSlot {
     pub index: usize,
@@ -26,7 +36,8 @@ pub struct ObjectSlot {
     /// The `.BIN` path as OBJECT.CFG wrote it.
     pub bin: String,
     pub module: OnceLock<Module>,
-    pub tx: Sender<Envelope>,
+    /// Its message queue (`mailbox`).
+    pub mailbox: crate::mailbox::Mailbox<Envelope>,
     /// Set when the object called `exit()`: it no longer runs (object-model 1.5).
     pub stopped: AtomicBool,
     /// Inside a sleep on virtual time (frames may run during the boot then).
@@ -58,6 +69,11 @@ thread_local! {
 
 pub fn current() -> Option<Arc<ObjectSlot>> {
     CURRENT.with(|c| c.borrow().clone())
+}
+
+/// The calling object's OID (no reference count taken, unlike `current`).
+pub fn current_oid() -> Option<usize> {
+    CURRENT.with(|c| c.borrow().as_ref().map(|s| s.oid))
 }
 
 pub(crate) fn set_current(slot: Arc<ObjectSlot>) {
@@ -104,21 +120,14 @@ pub(crate) fn spin_recv<T>(rx: &Receiver<T>) -> Spun<T> {
     }
 }
 
-/// `rx.recv()`, spinning first.
-fn recv<T>(rx: &Receiver<T>) -> Option<T> {
-    match spin_recv(rx) {
-        Spun::Got(v) => Some(v),
-        Spun::Gone => None,
-        Spun::Nothing => rx.recv().ok(),
-    }
-}
-
-/// The object's message loop; returns when the runtime drops its sender.
-pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(String)) {
+/// The object's message loop; it runs as long as the process (objects are never
+/// unloaded).
+pub(crate) fn run_loop(slot: &ObjectSlot, warn: impl Fn(String)) -> ! {
     let module = slot.module.get().expect("loaded before the loop starts");
     let rt = crate::runtime::Runtime::get().expect("objects run in a runtime");
     let sched = &rt.sched;
-    while let Some(mut env) = recv(&rx) {
+    loop {
+        let mut env = slot.mailbox.recv();
         sched.begin(slot.index, env.selector);
         let Some(entry) = module.entry(env.selector) else {
             warn(format!("object `{}` has no entry for selector {}: message dropped", slot.name(), env.selector));
@@ -131,7 +140,7 @@ pub(crate) fn run_loop(slot: &ObjectSlot, rx: Receiver<Envelope>, warn: impl Fn(
         RUNNING.with(|r| r.set((slot.index, env.selector)));
         // Keep a little slack after the message: C++ code may read a struct slightly
         // larger than what a short sender wrote.
-        env.data.resize(env.data.len() + 64, 0);
+        env.data.resize(env.data.len() + SLACK, 0);
         // SAFETY: `entry` is a function of the object's ObjectEntryTable (`void (*)(void*)`), given the
         // message bytes plus 64 bytes of slack, live for the call.
         unsafe { entry(env.data.as_mut_ptr().cast()) };

@@ -176,7 +176,7 @@ pub enum CallError {
 }
 
 fn enqueue(sched: &crate::sched::Sched, slot: &ObjectSlot, env: Envelope) -> Result<(), CallError> {
-    if sched.push(slot.index, || slot.tx.send(env).is_ok()) {
+    if sched.push(slot.index, || slot.mailbox.send(env).is_ok()) {
         return Ok(());
     }
     Err(CallError::UnknownDestination)
@@ -231,7 +231,7 @@ impl Runtime {
     pub fn send(&self, dest: usize, selector: u32, data: Vec<u8>) -> Result<(), CallError> {
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
         enqueue(&self.sched, &slot, Envelope { selector, data, reply: None, caller: None })?;
-        self.links.count(|| crate::object::current().map(|me| me.oid), dest, selector);
+        self.links.count(crate::object::current_oid, dest, selector);
         Ok(())
     }
 

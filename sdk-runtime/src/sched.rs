@@ -67,7 +67,8 @@ struct State {
     handed_over: bool,
     /// Objects reported stuck, for the caller to warn about once: (index, selector).
     stuck: Vec<(usize, u32)>,
-    /// What each object is running now (at every speed): index → selector.
+    /// What each object past [`BUSY_SLOTS`] is running now (at every speed): index →
+    /// selector (the others are in `Sched::busy`).
     busy: BTreeMap<usize, u32>,
     /// Threads parked on the condition variable: a change wakes them only when there
     /// are any (a futex wake is a system call even with nobody waiting).
@@ -96,8 +97,24 @@ impl State {
     }
 }
 
+/// Objects whose running selector is kept outside the lock (`Sched::busy`).
+const BUSY_SLOTS: usize = 256;
+/// `Sched::busy`: not running a message.
+const IDLE: u32 = u32::MAX;
+
+thread_local! {
+    /// The message this thread runs began on the fast path (no ticket, no turn).
+    static FAST: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
 pub struct Sched {
     state: Mutex<State>,
+    /// The selector each object runs now, by index, when not `IDLE`; written by the
+    /// object's own thread, read by the shutdown sequence.
+    busy: Box<[std::sync::atomic::AtomicU32]>,
+    /// Tickets queued (`State::queue.len()`, kept under the lock): none, and nothing
+    /// serialised, lets a message begin and end without the lock.
+    tickets: std::sync::atomic::AtomicUsize,
     cv: Condvar,
     /// Bumped (under the lock) by every change a waiter may be waiting for: spinning
     /// waiters watch it instead of parking.
@@ -110,6 +127,8 @@ impl Default for Sched {
     fn default() -> Sched {
         Sched {
             state: Mutex::default(),
+            busy: (0..BUSY_SLOTS).map(|_| std::sync::atomic::AtomicU32::new(IDLE)).collect(),
+            tickets: std::sync::atomic::AtomicUsize::new(0),
             cv: Condvar::new(),
             changes: AtomicU64::new(0),
             serial: AtomicBool::new(false),
@@ -191,7 +210,18 @@ impl Sched {
 
     /// The selector of the message object `index` is running (or waiting to run), if any.
     pub fn running(&self, index: usize) -> Option<u32> {
-        self.lock().busy.get(&index).copied()
+        match self.busy.get(index) {
+            Some(b) => Some(b.load(Ordering::Acquire)).filter(|&sel| sel != IDLE),
+            None => self.lock().busy.get(&index).copied(),
+        }
+    }
+
+    fn set_busy(&self, s: &mut State, index: usize, selector: Option<u32>) {
+        match (self.busy.get(index), selector) {
+            (Some(b), sel) => b.store(sel.unwrap_or(IDLE), Ordering::Release),
+            (None, Some(sel)) => drop(s.busy.insert(index, sel)),
+            (None, None) => drop(s.busy.remove(&index)),
+        }
     }
 
     /// Objects that outran the watchdog since the last call: (index, selector).
@@ -214,14 +244,32 @@ impl Sched {
             return false;
         }
         s.queue.push_back(index);
+        self.tickets.store(s.queue.len(), Ordering::Release);
         self.changed(s);
+        true
+    }
+
+    /// A message begins without the lock when nothing is serialised and no ticket is
+    /// left from a serialised spell: it would run at once anyway, and nobody waits for
+    /// it to begin or end.
+    fn fast(&self, index: usize, selector: u32) -> bool {
+        let Some(b) = self.busy.get(index) else { return false };
+        if self.serial() || self.tickets.load(Ordering::Acquire) != 0 {
+            return false;
+        }
+        b.store(selector, Ordering::Release);
         true
     }
 
     /// Object thread, before running a message it received: waits for its turn.
     pub fn begin(&self, index: usize, selector: u32) {
+        let fast = self.fast(index, selector);
+        FAST.with(|f| f.set(fast));
+        if fast {
+            return;
+        }
         let mut s = self.lock();
-        s.busy.insert(index, selector);
+        self.set_busy(&mut s, index, Some(selector));
         loop {
             let ticket = s.queue.iter().position(|&i| i == index);
             // A message sent while nothing was serialised has no ticket: it runs as it
@@ -229,6 +277,7 @@ impl Sched {
             if !self.serial() || s.detached.contains(&index) || ticket.is_none() {
                 if let Some(pos) = ticket {
                     s.queue.remove(pos);
+                    self.tickets.store(s.queue.len(), Ordering::Release);
                 }
                 return;
             }
@@ -238,6 +287,7 @@ impl Sched {
                 if let Some((pos, i)) = s.head() {
                     if i == index {
                         s.queue.remove(pos);
+                        self.tickets.store(s.queue.len(), Ordering::Release);
                         s.take(Holder::Object(index));
                         s.running = Some((index, selector));
                         s.delivered += 1;
@@ -253,12 +303,20 @@ impl Sched {
     /// Object thread, after a message: gives the turn back (or rejoins the turns, after
     /// a message that outran the watchdog).
     pub fn end(&self, index: usize) {
+        // Begun on the fast path: it took no turn and nobody waits for its end (the
+        // shutdown sequence polls `running`).
+        if FAST.with(|f| f.replace(false)) {
+            if let Some(b) = self.busy.get(index) {
+                b.store(IDLE, Ordering::Release);
+            }
+            return;
+        }
         let mut s = self.lock();
         if s.holder == Some(Holder::Object(index)) {
             s.give_back();
         }
         s.detached.remove(&index);
-        s.busy.remove(&index);
+        self.set_busy(&mut s, index, None);
         self.changed(s);
     }
 
