@@ -29,5 +29,6 @@ mod stick;
 mod support;
 mod tools;
 mod view;
+mod view_2xx;
 mod view_cdt;
 mod world_view;
