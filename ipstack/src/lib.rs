@@ -157,7 +157,7 @@ impl Net {
 
     /// The protocol of an endpoint (`OPENR_NET_TCP`…), a closed one's too; -1 if unknown.
     pub fn endpoint_protocol(&self, endpoint: EndpointId) -> i32 {
-        self.lock().protocol_of(endpoint.0)
+        self.lock().protocol_of(endpoint)
     }
 
     /// One request of an object (`openr_net_api.submit`). `sync`: the caller waits and

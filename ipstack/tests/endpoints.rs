@@ -78,12 +78,12 @@ impl Robot {
         (oid, selector, decode(&blob))
     }
 
-    fn tcp_endpoint(&self) -> u32 {
+    fn tcp_endpoint(&self) -> EndpointId {
         let mut req = request(PROTO_ENV, ENV_CREATE_ENDPOINT);
         req.value = PROTO_TCP;
         let r = self.call(&req);
         assert_eq!(r.error, 0);
-        assert_eq!(self.net.endpoint_protocol(EndpointId(r.endpoint)), PROTO_TCP);
+        assert_eq!(self.net.endpoint_protocol(r.endpoint), PROTO_TCP);
         r.endpoint
     }
 }

@@ -75,7 +75,8 @@ ids! {
     Selector;
     /// `OSyncKey` (`sync_key`).
     SyncKey;
-    /// An IPStack endpoint (`endpoint_protocol`, `openr_net_request::endpoint`).
+    /// An IPStack endpoint (`endpoint_protocol`, `openr_net_request::endpoint`,
+    /// `openr_net_result::endpoint`).
     EndpointId;
 }
 

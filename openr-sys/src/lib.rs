@@ -16,7 +16,7 @@
 //! Ids that must not be mixed have a type each ([`ids`]): [`PrimitiveId`], [`MemId`],
 //! [`TimerId`], [`DesignDataId`], [`SyncKey`], [`Selector`] and [`EndpointId`]. The
 //! function lists use them for arguments, results and out-pointers (`*mut MemId`), as
-//! does [`openr_vr_event::mem_id`], so the runtime's functions and the `openr` crate's
+//! do [`openr_vr_event::mem_id`] and the net structs' `endpoint`, so the runtime's functions and the `openr` crate's
 //! calls take the type the header means: a `MemId` passed to `close_primitive` fails to
 //! compile (checked by `compile_fail` doc tests in [`ids`]). Each is a
 //! `#[repr(transparent)]` newtype over `c_uint`, identical in the C ABI to the header's

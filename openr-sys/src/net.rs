@@ -33,7 +33,7 @@ pub const NET_DEFINES: &[(&str, i64)] = &[
 pub struct openr_net_request {
     pub proto: i32,
     pub op: i32,
-    pub endpoint: u32,
+    pub endpoint: crate::EndpointId,
     pub addr: u32,
     pub port: u32,
     pub laddr: u32,
@@ -67,7 +67,7 @@ pub struct openr_net_result {
     pub size: i32,
     pub ready: i32,
     pub module: *mut c_void,
-    pub endpoint: u32,
+    pub endpoint: crate::EndpointId,
     pub region: u32,
     pub base: *mut c_void,
     pub buf_size: u32,
