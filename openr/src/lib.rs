@@ -8,6 +8,9 @@
 //! protocol (object-model 2.8) with the C++ message layouts, so Rust subjects feed C++
 //! observers and the other way round.
 //!
+//! Ids keep the distinct types of `openr-sys` ([`MemId`], [`Selector`],
+//! [`robot::PrimitiveId`]), so one cannot be passed where another is expected.
+//!
 //! ```no_run
 //! use openr::{Context, NotifyEvent, Object, Observer, ReadyEvent, Subject};
 //!
@@ -46,6 +49,10 @@ mod shm;
 pub use comm::{observer_selectors, subject_selectors, MAX_OBSERVERS, MAX_SUBJECTS, SEL_EVENT};
 pub use console::Priority;
 pub use object::{Context, NotifyEvent, Object, Observer, ReadyEvent, Status, Subject};
+/// The host table's id types (one declaration, in `openr-sys`): a region's [`MemId`]
+/// (`Region::mem_id`), an entry's [`Selector`] (`ReadyEvent::observer`,
+/// `NotifyEvent::subject`, [`SEL_EVENT`]); `robot::PrimitiveId` is openr-sys's too.
+pub use openr_sys::{MemId, Selector};
 pub use payload::{Payload, Plain};
 pub use shm::Region;
 
