@@ -7,7 +7,7 @@ use std::time::Duration;
 
 use super::codes::PROTO_DNS;
 use super::stack::State;
-use super::{Net, NetResult, Pending};
+use super::{EndpointId, Net, NetResult, Pending};
 
 mod code {
     pub const SUCCESS: i32 = 0;
@@ -49,7 +49,7 @@ pub struct DnsEp {
     last: Option<HostEntry>,
 }
 
-fn dns_ep(st: &mut State, id: u32) -> Option<&mut DnsEp> {
+fn dns_ep(st: &mut State, id: EndpointId) -> Option<&mut DnsEp> {
     match st.eps.get_mut(&id) {
         Some(super::stack::Endpoint::Dns(d)) => Some(d),
         _ => None,
@@ -122,7 +122,7 @@ pub(crate) fn dns_op(st: &mut State, net: &'static Net, p: Pending) {
 
 /// GetHostByName / GetHostByAddr: the lookup runs on a thread of its own; its reply comes
 /// through [`finish`].
-fn start_lookup(st: &mut State, net: &'static Net, id: u32, p: Pending) {
+fn start_lookup(st: &mut State, net: &'static Net, id: EndpointId, p: Pending) {
     let req = p.req;
     let servers = st.configured_dns_servers();
     let domain = st.default_domain();
@@ -149,7 +149,7 @@ fn failed(p: Pending, err: i32, server: u32) {
     p.complete(r)
 }
 
-fn finish(st: &mut State, id: u32, outcome: Result<HostEntry, (i32, u32)>) {
+fn finish(st: &mut State, id: EndpointId, outcome: Result<HostEntry, (i32, u32)>) {
     let Some(ep) = dns_ep(st, id) else { return };
     let Some(p) = ep.inflight.take() else { return }; // closed meanwhile: already answered
     match outcome {

@@ -37,6 +37,7 @@ use stack::State;
 pub use openr_sys::{openr_net_request as Request, openr_net_result as NetResult};
 
 pub use openr_sys::openr_net_encode_fn as EncodeFn;
+pub use openr_sys::{EndpointId, Selector};
 
 /// Where the stack's messages go; the host decides what `--quiet` hides.
 pub trait Report: Send + Sync {
@@ -52,7 +53,7 @@ pub trait Report: Send + Sync {
 pub trait Host: Report {
     /// Queues `message` (the object's message with the reply encoded into it) to
     /// (oid, selector); a message for an object that is gone is dropped.
-    fn send(&self, oid: usize, selector: u32, message: Vec<u8>);
+    fn send(&self, oid: usize, selector: Selector, message: Vec<u8>);
     /// The text of the robot's file `path` (`/MS/OPEN-R/…`), if the stick has it.
     fn read_stick(&self, path: &str) -> Option<String>;
 }
@@ -60,7 +61,7 @@ pub trait Host: Report {
 /// Where a completed operation's reply goes.
 enum Target {
     /// `Send`: the encoded message copy is queued to (oid, selector).
-    Async { oid: usize, selector: u32, blob: Vec<u8> },
+    Async { oid: usize, selector: Selector, blob: Vec<u8> },
     /// `Call`: the caller waits on this channel and encodes into its own message.
     Sync(mpsc::SyncSender<NetResult>),
 }
@@ -155,7 +156,7 @@ impl Net {
     }
 
     /// The protocol of an endpoint (`OPENR_NET_TCP`…), a closed one's too; -1 if unknown.
-    pub fn endpoint_protocol(&self, endpoint: u32) -> i32 {
+    pub fn endpoint_protocol(&self, endpoint: EndpointId) -> i32 {
         self.lock().protocol_of(endpoint)
     }
 
@@ -173,7 +174,7 @@ impl Net {
         size: usize,
         encode: EncodeFn,
         oid: *mut c_void,
-        selector: u32,
+        selector: Selector,
         sync: bool,
     ) -> i32 {
         if req.is_null() || blob.is_null() {

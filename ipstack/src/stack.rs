@@ -10,7 +10,7 @@ use super::codes::{ant, op, tcp, PROTO_DNS, PROTO_ENV, PROTO_INIT, PROTO_TCP, PR
 use super::config::{self, NetConfig};
 use super::tcp::{Listener, TcpEp};
 use super::udp::UdpEp;
-use super::{dns, sys, Host, Net, NetResult, Pending};
+use super::{dns, sys, EndpointId, Host, Net, NetResult, Pending};
 
 /// `antModuleRef.module` of every endpoint (never null: null means the environment).
 const MODULE_MAGIC: usize = 0x414e_5400;
@@ -39,9 +39,9 @@ enum RegValue {
 
 pub struct State {
     next_id: u32,
-    pub(super) eps: HashMap<u32, Endpoint>,
+    pub(super) eps: HashMap<EndpointId, Endpoint>,
     /// Protocols of closed endpoints, so late messages get that protocol's CLOSED code.
-    tombstones: HashMap<u32, i32>,
+    tombstones: HashMap<EndpointId, i32>,
     pub(super) listeners: HashMap<(u32, u16), Listener>,
     /// Live shared buffers: region id → (base, size).
     buffers: BTreeMap<u32, (usize, usize)>,
@@ -55,7 +55,7 @@ pub struct State {
 
 /// The TCP endpoint `id` of a table (a borrow of the table alone, so that the rest of
 /// [`State`] stays usable beside it).
-pub(super) fn tcp_in(eps: &mut HashMap<u32, Endpoint>, id: u32) -> Option<&mut TcpEp> {
+pub(super) fn tcp_in(eps: &mut HashMap<EndpointId, Endpoint>, id: EndpointId) -> Option<&mut TcpEp> {
     match eps.get_mut(&id) {
         Some(Endpoint::Tcp(t)) => Some(t),
         _ => None,
@@ -66,7 +66,7 @@ pub(super) fn tcp_in(eps: &mut HashMap<u32, Endpoint>, id: u32) -> Option<&mut T
 #[derive(Clone, Copy)]
 enum Token {
     Listener((u32, u16)),
-    Ep(u32),
+    Ep(EndpointId),
 }
 
 impl State {
@@ -85,11 +85,11 @@ impl State {
         }
     }
 
-    pub fn remember_closed(&mut self, id: u32, proto: i32) {
+    pub fn remember_closed(&mut self, id: EndpointId, proto: i32) {
         self.tombstones.insert(id, proto);
     }
 
-    pub fn protocol_of(&self, id: u32) -> i32 {
+    pub fn protocol_of(&self, id: EndpointId) -> i32 {
         match self.eps.get(&id) {
             Some(Endpoint::Tcp(_)) => PROTO_TCP,
             Some(Endpoint::Udp(_)) => PROTO_UDP,
@@ -139,11 +139,11 @@ impl State {
         self.buffers.range(..).any(|(_, &(base, size))| p >= base && p.checked_add(n).is_some_and(|end| end <= base + size))
     }
 
-    pub(super) fn tcp(&mut self, id: u32) -> Option<&mut TcpEp> {
+    pub(super) fn tcp(&mut self, id: EndpointId) -> Option<&mut TcpEp> {
         tcp_in(&mut self.eps, id)
     }
 
-    pub(super) fn udp(&mut self, id: u32) -> Option<&mut UdpEp> {
+    pub(super) fn udp(&mut self, id: EndpointId) -> Option<&mut UdpEp> {
         match self.eps.get_mut(&id) {
             Some(Endpoint::Udp(u)) => Some(u),
             _ => None,
@@ -251,7 +251,7 @@ fn env_op(st: &mut State, p: Pending) {
                 PROTO_DNS => Endpoint::Dns(dns::DnsEp::default()),
                 _ => return p.fail(ant::ENDPOINT_NOFACTORY),
             };
-            let id = st.next_id;
+            let id = EndpointId(st.next_id);
             st.next_id += 1;
             st.eps.insert(id, ep);
             let mut r = NetResult::new(&req, ant::SUCCESS);

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 use super::codes::{op, tcp, tcp_error, PROTO_TCP};
 use super::config::NetConfig;
 use super::stack::{robot_peer, tcp_in, Endpoint, State};
-use super::{sys, NetResult, Pending};
+use super::{sys, EndpointId, NetResult, Pending};
 
 /// How long a failed Listen waits before its error reply: samples retry at once in a
 /// tight loop (3.4).
@@ -63,7 +63,7 @@ pub struct TcpEp {
 /// A host listening socket, shared by every Listen endpoint on its (address, port).
 pub struct Listener {
     fd: OwnedFd,
-    waiters: VecDeque<u32>,
+    waiters: VecDeque<EndpointId>,
 }
 
 impl TcpEp {
@@ -167,7 +167,7 @@ fn bind(t: &mut TcpEp, cfg: &NetConfig, p: Pending) {
 
 /// Queues the endpoint on its listener; the key to accept on, unless the Listen failed
 /// (its error is then answered after [`LISTEN_RETRY_DELAY`]).
-fn listen(t: &mut TcpEp, listeners: &mut HashMap<(u32, u16), Listener>, cfg: &NetConfig, robot_ip: u32, id: u32, p: Pending) -> Option<(u32, u16)> {
+fn listen(t: &mut TcpEp, listeners: &mut HashMap<(u32, u16), Listener>, cfg: &NetConfig, robot_ip: u32, id: EndpointId, p: Pending) -> Option<(u32, u16)> {
     match t.phase {
         TcpPhase::New => {}
         TcpPhase::Listening => {
@@ -364,7 +364,7 @@ fn address(t: &mut TcpEp, cfg: &NetConfig, p: Pending) {
 }
 
 /// Advances everything pending on a TCP endpoint without blocking.
-pub(super) fn progress(st: &mut State, id: u32) {
+pub(super) fn progress(st: &mut State, id: EndpointId) {
     let Some(t) = st.tcp(id) else { return };
     let Some(fd) = t.fd.as_ref().map(|f| f.as_raw_fd()) else { return };
     if t.phase == TcpPhase::Connecting && !finish_connect(t, fd) {
@@ -500,7 +500,7 @@ fn pull_receive(t: &mut TcpEp, fd: RawFd) {
     }
 }
 
-fn finish_close(st: &mut State, id: u32, p: Pending, abort: bool) {
+fn finish_close(st: &mut State, id: EndpointId, p: Pending, abort: bool) {
     let Some(Endpoint::Tcp(mut t)) = st.eps.remove(&id) else { return p.fail(tcp::CONNECTION_CLOSED) };
     st.remember_closed(id, PROTO_TCP);
     // Everything pending is answered before the Close reply (1.10).

@@ -5,7 +5,7 @@ use std::os::fd::{AsRawFd, OwnedFd, RawFd};
 use super::codes::{op, udp, udp_error, PROTO_UDP};
 use super::config::NetConfig;
 use super::stack::{robot_peer, Endpoint, State};
-use super::{sys, NetResult, Pending};
+use super::{sys, EndpointId, NetResult, Pending};
 
 #[derive(Default)]
 pub struct UdpEp {
@@ -163,7 +163,7 @@ fn receive(u: &mut UdpEp, valid: bool, p: Pending) -> bool {
     true
 }
 
-fn close(st: &mut State, id: u32, p: Pending) {
+fn close(st: &mut State, id: EndpointId, p: Pending) {
     let Some(Endpoint::Udp(mut u)) = st.eps.remove(&id) else { return p.fail(udp::CONNECTION_CLOSED) };
     st.remember_closed(id, PROTO_UDP);
     if let Some((r, ..)) = u.recv.take() {

@@ -7,7 +7,7 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use common::Recorder;
-use openr_ipstack::{Net, NetOptions, NetResult, Request};
+use openr_ipstack::{EndpointId, Net, NetOptions, NetResult, Request, Selector};
 
 mod common;
 
@@ -63,7 +63,7 @@ impl Robot {
         let mut blob = vec![0u8; std::mem::size_of::<NetResult>()];
         let (oid, selector) = to.unwrap_or((0, 0));
         // SAFETY: `req` is a valid request; `blob` is the message `encode` writes into.
-        let rc = unsafe { self.net.submit(req, blob.as_mut_ptr().cast(), blob.len(), encode, oid as *mut c_void, selector, to.is_none()) };
+        let rc = unsafe { self.net.submit(req, blob.as_mut_ptr().cast(), blob.len(), encode, oid as *mut c_void, Selector(selector), to.is_none()) };
         (rc, decode(&blob))
     }
 
@@ -78,7 +78,7 @@ impl Robot {
         (oid, selector, decode(&blob))
     }
 
-    fn tcp_endpoint(&self) -> u32 {
+    fn tcp_endpoint(&self) -> EndpointId {
         let mut req = request(PROTO_ENV, ENV_CREATE_ENDPOINT);
         req.value = PROTO_TCP;
         let r = self.call(&req);
@@ -199,7 +199,7 @@ fn a_null_request_is_refused() {
     let r = robot(NetOptions::default(), Vec::new());
     let mut blob = [0u8; 8];
     // SAFETY: null is what is being refused; `blob` is valid.
-    let rc = unsafe { r.net.submit(std::ptr::null(), blob.as_mut_ptr().cast(), blob.len(), encode, std::ptr::null_mut(), 0, true) };
+    let rc = unsafe { r.net.submit(std::ptr::null(), blob.as_mut_ptr().cast(), blob.len(), encode, std::ptr::null_mut(), Selector(0), true) };
     assert_eq!(rc, -1);
     assert_eq!(blob, [0; 8], "nothing written");
 }

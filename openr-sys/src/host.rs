@@ -40,7 +40,8 @@ pub struct openr_vr_event {
     /// DONE: the `vr_submit` token.
     pub token: u64,
     /// DATA: a new vector in shared memory; the event owns one reference.
-    pub mem_id: u32,
+    pub mem_id: crate::MemId,
+    /// DATA: its size in bytes.
     pub size: u32,
 }
 
@@ -114,19 +115,19 @@ macro_rules! host_fns {
         fn self_oid() -> *mut $crate::c_void = ::core::ptr::null_mut();
         fn self_name() -> *const $crate::c_char = c"?".as_ptr();
         // messages
-        fn send(dest: *mut $crate::c_void, selector: $crate::c_uint, msg: *const $crate::c_void, size: usize) -> $crate::c_int = -1;
-        fn call(dest: *mut $crate::c_void, selector: $crate::c_uint, msg: *const $crate::c_void, size: usize, reply: *mut $crate::c_void, reply_cap: usize, got: *mut usize, timeout_ms: $crate::c_uint) -> $crate::c_int = -1;
+        fn send(dest: *mut $crate::c_void, selector: $crate::Selector, msg: *const $crate::c_void, size: usize) -> $crate::c_int = -1;
+        fn call(dest: *mut $crate::c_void, selector: $crate::Selector, msg: *const $crate::c_void, size: usize, reply: *mut $crate::c_void, reply_cap: usize, got: *mut usize, timeout_ms: $crate::c_uint) -> $crate::c_int = -1;
         fn reply(msg: *const $crate::c_void, size: usize) -> $crate::c_int = 1;
         // service registry
-        fn register_service(name: *const $crate::c_char, oid: *mut $crate::c_void, selector: $crate::c_uint) -> $crate::c_int = -1;
+        fn register_service(name: *const $crate::c_char, oid: *mut $crate::c_void, selector: $crate::Selector) -> $crate::c_int = -1;
         fn unregister_services() -> () = ();
         // console
         fn console_write(text: *const $crate::c_char, len: usize) -> () = ();
         // shared memory
-        fn shm_alloc(size: usize, mem_id: *mut $crate::c_uint) -> *mut $crate::c_void = ::core::ptr::null_mut();
-        fn shm_base(mem_id: $crate::c_uint, size: *mut usize) -> *mut $crate::c_void = ::core::ptr::null_mut();
-        fn shm_ref(mem_id: $crate::c_uint) -> () = ();
-        fn shm_unref(mem_id: $crate::c_uint) -> () = ();
+        fn shm_alloc(size: usize, mem_id: *mut $crate::MemId) -> *mut $crate::c_void = ::core::ptr::null_mut();
+        fn shm_base(mem_id: $crate::MemId, size: *mut usize) -> *mut $crate::c_void = ::core::ptr::null_mut();
+        fn shm_ref(mem_id: $crate::MemId) -> () = ();
+        fn shm_unref(mem_id: $crate::MemId) -> () = ();
         // time
         fn system_time(sec: *mut $crate::c_uint, usec: *mut $crate::c_uint) -> () = ();
         fn get_clock(sec_since_2000: *mut $crate::c_longlong, time_dif: *mut $crate::c_int) -> () = ();
@@ -134,31 +135,31 @@ macro_rules! host_fns {
         fn sleep_ns(nsec: $crate::c_ulonglong) -> () = ();
         // robot design and design data (OStatus results)
         fn robot_design() -> *const $crate::c_char = c"ERS-7".as_ptr();
-        fn find_design_data(keyword: *const $crate::c_char, id: *mut $crate::c_uint, data: *mut *mut $crate::c_void, size: *mut usize) -> $crate::c_uint = $crate::O_FAIL;
-        fn delete_design_data(id: $crate::c_uint) -> $crate::c_uint = $crate::O_FAIL;
+        fn find_design_data(keyword: *const $crate::c_char, id: *mut $crate::DesignDataId, data: *mut *mut $crate::c_void, size: *mut usize) -> $crate::c_uint = $crate::O_FAIL;
+        fn delete_design_data(id: $crate::DesignDataId) -> $crate::c_uint = $crate::O_FAIL;
         // timers (0 = no timer)
-        fn set_timer(dest: *mut $crate::c_void, selector: $crate::c_uint, msg: *const $crate::c_void, size: usize, after_ms: $crate::c_uint, period_ms: $crate::c_uint) -> $crate::c_uint = 0;
-        fn cancel_timer(id: $crate::c_uint) -> $crate::c_int = -1;
+        fn set_timer(dest: *mut $crate::c_void, selector: $crate::Selector, msg: *const $crate::c_void, size: usize, after_ms: $crate::c_uint, period_ms: $crate::c_uint) -> $crate::TimerId = $crate::TimerId::NONE;
+        fn cancel_timer(id: $crate::TimerId) -> $crate::c_int = -1;
         // power
         fn power_status(out: *mut $crate::openr_power_state) -> () = ();
-        fn observe_power(oid: *mut $crate::c_void, selector: $crate::c_uint, filter: *const $crate::openr_power_state) -> $crate::c_uint = $crate::O_FAIL;
+        fn observe_power(oid: *mut $crate::c_void, selector: $crate::Selector, filter: *const $crate::openr_power_state) -> $crate::c_uint = $crate::O_FAIL;
         fn set_motor_power(on: $crate::c_int) -> () = ();
         fn shutdown() -> () = ();
         // the virtual robot (OStatus results)
-        fn open_primitive(locator: *const $crate::c_char, id: *mut $crate::c_uint) -> $crate::c_uint = $crate::O_FAIL;
-        fn close_primitive(id: $crate::c_uint) -> $crate::c_uint = $crate::O_FAIL;
-        fn control_primitive(id: $crate::c_uint, request: $crate::c_uint, param: *const $crate::c_void, param_size: usize, result: *mut $crate::c_void, result_size: usize) -> $crate::c_uint = $crate::O_FAIL;
-        fn joint_gain(op: $crate::c_int, id: $crate::c_uint, gains: *mut $crate::c_ushort) -> $crate::c_uint = $crate::O_FAIL;
-        fn joint_value(id: $crate::c_uint, value16: *mut $crate::c_void) -> $crate::c_uint = $crate::O_FAIL;
-        fn sensor_value(id: $crate::c_uint, value16: *mut $crate::c_void) -> $crate::c_uint = $crate::O_FAIL;
-        fn sync_key(op: $crate::c_int, key: $crate::c_uint, k1: *mut $crate::c_uint, k2: *mut $crate::c_uint) -> $crate::c_uint = $crate::O_FAIL;
-        fn new_vector(kind: $crate::c_int, n: usize, data_size: usize, mem_id: *mut $crate::c_uint, base: *mut *mut $crate::c_void) -> $crate::c_uint = $crate::O_FAIL;
-        fn delete_vector(mem_id: $crate::c_uint) -> $crate::c_uint = $crate::O_FAIL;
-        fn set_cdt(mem_id: $crate::c_uint) -> $crate::c_uint = $crate::O_FAIL;
+        fn open_primitive(locator: *const $crate::c_char, id: *mut $crate::PrimitiveId) -> $crate::c_uint = $crate::O_FAIL;
+        fn close_primitive(id: $crate::PrimitiveId) -> $crate::c_uint = $crate::O_FAIL;
+        fn control_primitive(id: $crate::PrimitiveId, request: $crate::c_uint, param: *const $crate::c_void, param_size: usize, result: *mut $crate::c_void, result_size: usize) -> $crate::c_uint = $crate::O_FAIL;
+        fn joint_gain(op: $crate::c_int, id: $crate::PrimitiveId, gains: *mut $crate::c_ushort) -> $crate::c_uint = $crate::O_FAIL;
+        fn joint_value(id: $crate::PrimitiveId, value16: *mut $crate::c_void) -> $crate::c_uint = $crate::O_FAIL;
+        fn sensor_value(id: $crate::PrimitiveId, value16: *mut $crate::c_void) -> $crate::c_uint = $crate::O_FAIL;
+        fn sync_key(op: $crate::c_int, key: $crate::SyncKey, k1: *mut $crate::SyncKey, k2: *mut $crate::SyncKey) -> $crate::c_uint = $crate::O_FAIL;
+        fn new_vector(kind: $crate::c_int, n: usize, data_size: usize, mem_id: *mut $crate::MemId, base: *mut *mut $crate::c_void) -> $crate::c_uint = $crate::O_FAIL;
+        fn delete_vector(mem_id: $crate::MemId) -> $crate::c_uint = $crate::O_FAIL;
+        fn set_cdt(mem_id: $crate::MemId) -> $crate::c_uint = $crate::O_FAIL;
         fn volume_switch(set: $crate::c_int, value: *mut $crate::c_uchar) -> $crate::c_uint = $crate::O_FAIL;
         // system objects only
-        fn vr_attach(service: $crate::c_int, selector: $crate::c_uint) -> $crate::c_uint = $crate::O_FAIL;
-        fn vr_submit(service: $crate::c_int, subject_oid: *mut $crate::c_void, subject_selector: $crate::c_uint, base: *mut $crate::c_void, size: usize, token: *mut $crate::c_ulonglong) -> $crate::c_uint = $crate::O_FAIL;
+        fn vr_attach(service: $crate::c_int, selector: $crate::Selector) -> $crate::c_uint = $crate::O_FAIL;
+        fn vr_submit(service: $crate::c_int, subject_oid: *mut $crate::c_void, subject_selector: $crate::Selector, base: *mut $crate::c_void, size: usize, token: *mut $crate::c_ulonglong) -> $crate::c_uint = $crate::O_FAIL;
         // later additions (appended: objects built before them keep working)
         fn fatal(kind: $crate::c_uint) -> () = ();
     } };

@@ -13,6 +13,18 @@
 //! - `HOST_FIELDS` / `NET_FIELDS`: each field's name and offset, which a test compares
 //!   with what g++ makes of the C headers (`tests/header_layout.rs`).
 //!
+//! Ids that must not be mixed have a type each ([`ids`]): [`PrimitiveId`], [`MemId`],
+//! [`TimerId`], [`DesignDataId`], [`SyncKey`], [`Selector`] and [`EndpointId`]. The
+//! function lists use them for arguments, results and out-pointers (`*mut MemId`), as
+//! do [`openr_vr_event::mem_id`] and the net structs' `endpoint`, so the runtime's
+//! functions and the `openr` crate's calls take the type the header means: a `MemId`
+//! passed to `close_primitive` fails to compile (checked by `compile_fail` doc tests
+//! in [`ids`]). Each is a `#[repr(transparent)]` newtype over `c_uint`, identical in
+//! the C ABI to the header's `unsigned int`, so the headers and every C++ forwarder are
+//! unchanged and the layout test still compares them field for field. The field names
+//! are the header's and stay (a `<noun>_<verb>` renaming would change the header and
+//! every forwarder): only the Rust types changed.
+//!
 //! Adding a call: one line in the list (name, arguments, result, failure value), the
 //! runtime's function, the C++ forwarder and its header line, a test. A field in the
 //! header out of order fails the layout test; a missing or mistyped runtime function
@@ -27,8 +39,10 @@ pub mod __private {
 }
 
 mod host;
+pub mod ids;
 mod net;
 pub use host::*;
+pub use ids::*;
 pub use net::*;
 
 /// Builds a table struct from a function list.

@@ -33,7 +33,7 @@ pub const NET_DEFINES: &[(&str, i64)] = &[
 pub struct openr_net_request {
     pub proto: i32,
     pub op: i32,
-    pub endpoint: u32,
+    pub endpoint: crate::EndpointId,
     pub addr: u32,
     pub port: u32,
     pub laddr: u32,
@@ -67,7 +67,7 @@ pub struct openr_net_result {
     pub size: i32,
     pub ready: i32,
     pub module: *mut c_void,
-    pub endpoint: u32,
+    pub endpoint: crate::EndpointId,
     pub region: u32,
     pub base: *mut c_void,
     pub buf_size: u32,
@@ -135,8 +135,8 @@ pub type openr_net_encode_fn = unsafe extern "C" fn(blob: *mut c_void, result: *
 #[macro_export]
 macro_rules! net_fns {
     ($mode:ident [$($pre:tt)*]) => { $crate::__dispatch! { $mode [$($pre)*]
-        fn endpoint_protocol(endpoint: $crate::c_uint) -> $crate::c_int = -1;
-        fn submit(req: *const $crate::openr_net_request, blob: *mut $crate::c_void, blob_size: usize, encode: $crate::openr_net_encode_fn, reply_oid: *mut $crate::c_void, reply_selector: $crate::c_uint, sync: $crate::c_int) -> $crate::c_int = -1;
+        fn endpoint_protocol(endpoint: $crate::EndpointId) -> $crate::c_int = -1;
+        fn submit(req: *const $crate::openr_net_request, blob: *mut $crate::c_void, blob_size: usize, encode: $crate::openr_net_encode_fn, reply_oid: *mut $crate::c_void, reply_selector: $crate::Selector, sync: $crate::c_int) -> $crate::c_int = -1;
         fn config_value(key: *const $crate::c_char, out: *mut $crate::c_char, cap: usize) -> $crate::c_int = -1;
         fn robot_number() -> $crate::c_uint = 0;
     } };

@@ -10,7 +10,7 @@ use std::mem::{offset_of, size_of};
 
 /// The host table and its constants, declared once in `openr-sys` (checked there
 /// against `openr_host.h`).
-pub use openr_sys::{openr_host_api, openr_power_state, GAIN_DISABLE, GAIN_ENABLE, GAIN_SET, HOST_ABI_VERSION, VECTOR_COMMAND};
+pub use openr_sys::{openr_host_api, openr_power_state, MemId, Selector, GAIN_DISABLE, GAIN_ENABLE, GAIN_SET, HOST_ABI_VERSION, VECTOR_COMMAND};
 
 /// `OMessageType` values (`OPENRMessages.h`, `ObjcommMessages.h`).
 pub const OMSG_OSTATUS: u32 = 2;
@@ -46,14 +46,14 @@ pub const OBJCOMM_VERSION22: u32 = 4;
 /// `MAX_NUM_DATA`.
 pub const MAX_NUM_DATA: usize = 13;
 /// `Selector UNDEF`.
-pub const UNDEF: u32 = 0xffff_ffff;
+pub const UNDEF: Selector = Selector::UNDEF;
 
 /// `OServiceEntry { OID oid; Selector selector; }` (OID is one pointer).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct OServiceEntry {
     pub oid: *mut c_void,
-    pub selector: u32,
+    pub selector: Selector,
 }
 
 impl OServiceEntry {
@@ -101,7 +101,8 @@ pub struct OControlMessage {
     pub sub_name: [u8; 128],
 }
 
-/// `OControlReplyMessage`.
+/// `OControlReplyMessage`. Its `mem_id` (`memID`) carries the objcomm version
+/// (`OBJCOMM_VERSION22`), not a region, so it stays a plain number.
 #[repr(C)]
 #[derive(Clone, Copy)]
 pub struct OControlReplyMessage {
@@ -128,7 +129,7 @@ pub struct OReadyMessage {
 #[derive(Clone, Copy)]
 pub struct TransferedData {
     pub src_rcr: *mut c_void,
-    pub mem_id: u32,
+    pub mem_id: MemId,
     pub offset: u32,
     pub size: usize,
 }
@@ -147,7 +148,7 @@ pub struct ONotifyMessage {
 /// One `ObjectEntryTable` row: `{Selector selector; Entry entry;}`.
 #[repr(C)]
 pub struct EntryRow {
-    pub selector: u32,
+    pub selector: Selector,
     pub entry: Option<unsafe extern "C" fn(*mut c_void)>,
 }
 

@@ -17,7 +17,7 @@
 //! store and return it, exactly as they do a C++ subject's `RCRegion*`.
 use std::ffi::c_void;
 
-use crate::abi::{self, OControlMessage, OControlReplyMessage, ONotifyMessage, OReadyMessage, OServiceEntry, TransferedData};
+use crate::abi::{self, MemId, OControlMessage, OControlReplyMessage, ONotifyMessage, OReadyMessage, OServiceEntry, Selector, TransferedData};
 use crate::console::{osyslog, Priority};
 use crate::host;
 use crate::shm::Region;
@@ -27,23 +27,23 @@ use crate::Status;
 pub const MAX_SUBJECTS: usize = 16;
 pub const MAX_OBSERVERS: usize = 16;
 /// Life-cycle selectors (Init, Start, Stop, Destroy).
-pub const SEL_INIT: u32 = 0;
-pub const SEL_START: u32 = 1;
-pub const SEL_STOP: u32 = 2;
-pub const SEL_DESTROY: u32 = 3;
+pub const SEL_INIT: Selector = Selector(0);
+pub const SEL_START: Selector = Selector(1);
+pub const SEL_STOP: Selector = Selector(2);
+pub const SEL_DESTROY: Selector = Selector(3);
 /// The event entry after the observer slots: messages an object's own helper threads
 /// (or the runtime) post to it, `u32` length then the bytes (`Object::event`).
-pub const SEL_EVENT: u32 = 4 + 2 * MAX_SUBJECTS as u32 + 2 * MAX_OBSERVERS as u32;
+pub const SEL_EVENT: Selector = Selector(4 + 2 * MAX_SUBJECTS as u32 + 2 * MAX_OBSERVERS as u32);
 
 /// Entry selectors of subject slot `k`: (Control, Ready).
-pub const fn subject_selectors(k: usize) -> (u32, u32) {
-    (4 + 2 * k as u32, 5 + 2 * k as u32)
+pub const fn subject_selectors(k: usize) -> (Selector, Selector) {
+    (Selector(4 + 2 * k as u32), Selector(5 + 2 * k as u32))
 }
 
 /// Entry selectors of observer slot `k`: (Connect, Notify).
-pub const fn observer_selectors(k: usize) -> (u32, u32) {
+pub const fn observer_selectors(k: usize) -> (Selector, Selector) {
     let base = 4 + 2 * MAX_SUBJECTS as u32;
-    (base + 2 * k as u32, base + 1 + 2 * k as u32)
+    (Selector(base + 2 * k as u32), Selector(base + 1 + 2 * k as u32))
 }
 
 /// What an entry selector means.
@@ -60,8 +60,8 @@ pub(crate) enum Entry {
     Event,
 }
 
-pub(crate) const fn entry_of(sel: u32) -> Entry {
-    let s = sel as usize;
+pub(crate) const fn entry_of(sel: Selector) -> Entry {
+    let s = sel.0 as usize;
     match sel {
         SEL_INIT => Entry::Init,
         SEL_START => Entry::Start,
@@ -199,8 +199,10 @@ impl SubjectState {
         let n = (msg.num_of_data.max(0) as usize).min(abi::MAX_NUM_DATA);
         for &token in &msg.rc_region[..n] {
             if !token.is_null() {
-                crate::shm::token_returned(token as usize as u32);
-                host::shm_unref(token as usize as u32);
+                // A Rust subject's handle is its region's MemId, carried as a pointer.
+                let mem_id = MemId(token as usize as u32);
+                crate::shm::token_returned(mem_id);
+                host::shm_unref(mem_id);
             }
         }
         let self_id = self.id;
@@ -274,7 +276,7 @@ fn send_notify(self_id: OServiceEntry, o: &mut ObserverRec) -> bool {
     if o.ready <= 0 || o.n_notify < o.d_min || o.queue.is_empty() {
         return true;
     }
-    let empty = TransferedData { src_rcr: std::ptr::null_mut(), mem_id: 0, offset: 0, size: 0 };
+    let empty = TransferedData { src_rcr: std::ptr::null_mut(), mem_id: MemId(0), offset: 0, size: 0 };
     let mut m = ONotifyMessage { msg_type: abi::OMSG_NOTIFY_V22, subject_id: self_id, num_of_data: 0, num_of_notify: 0, data: [empty; abi::MAX_NUM_DATA] };
     let (mut pos, mut units, mut regions) = (0, 0, 0);
     while pos < o.queue.len() {
@@ -284,7 +286,7 @@ fn send_notify(self_id: OServiceEntry, o: &mut ObserverRec) -> bool {
             break;
         }
         for r in o.queue[pos..end].iter().flatten() {
-            m.data[regions] = TransferedData { src_rcr: r.mem_id() as usize as *mut c_void, mem_id: r.mem_id(), offset: r.offset() as u32, size: r.len() };
+            m.data[regions] = TransferedData { src_rcr: r.mem_id().0 as usize as *mut c_void, mem_id: r.mem_id(), offset: r.offset() as u32, size: r.len() };
             regions += 1;
         }
         units += 1;

@@ -3,7 +3,7 @@
 use std::ffi::{c_void, CStr};
 use std::sync::OnceLock;
 
-use crate::abi::{self, openr_host_api, OServiceEntry};
+use crate::abi::{self, openr_host_api, MemId, OServiceEntry, Selector};
 
 struct Api(&'static openr_host_api);
 // SAFETY: the table is immutable and lives as long as the process.
@@ -109,7 +109,7 @@ pub(crate) fn call<T: Copy, R: Plain>(dest: OServiceEntry, msg: &T, timeout_ms: 
 }
 
 /// Registers `name` at (self, selector): 0 ok, 1 already registered, -1 no runtime.
-pub(crate) fn register_service(name: &str, selector: u32) -> i32 {
+pub(crate) fn register_service(name: &str, selector: Selector) -> i32 {
     let Some(a) = api() else { return -1 };
     let Ok(c) = std::ffi::CString::new(name) else { return -1 };
     // SAFETY: `c` is a C string that outlives the call; the runtime copies the name.
@@ -137,15 +137,15 @@ pub(crate) fn console_write(text: &[u8]) {
     }
 }
 
-pub(crate) fn shm_alloc(size: usize) -> Option<(u32, *mut u8)> {
+pub(crate) fn shm_alloc(size: usize) -> Option<(MemId, *mut u8)> {
     let a = api()?;
-    let mut id = 0;
-    // SAFETY: `id` is a live u32 the runtime writes.
+    let mut id = MemId::default();
+    // SAFETY: `id` is a live MemId (a u32 in the ABI) the runtime writes.
     let p = unsafe { (a.shm_alloc)(size, &mut id) };
     (!p.is_null()).then_some((id, p.cast()))
 }
 
-pub(crate) fn shm_base(id: u32) -> Option<(*mut u8, usize)> {
+pub(crate) fn shm_base(id: MemId) -> Option<(*mut u8, usize)> {
     let a = api()?;
     let mut size = 0;
     // SAFETY: `size` is a live usize the runtime writes.
@@ -153,14 +153,14 @@ pub(crate) fn shm_base(id: u32) -> Option<(*mut u8, usize)> {
     (!p.is_null()).then_some((p.cast(), size))
 }
 
-pub(crate) fn shm_ref(id: u32) {
+pub(crate) fn shm_ref(id: MemId) {
     if let Some(a) = api() {
         // SAFETY: any id is accepted (an unknown one is ignored by the runtime).
         unsafe { (a.shm_ref)(id) };
     }
 }
 
-pub(crate) fn shm_unref(id: u32) {
+pub(crate) fn shm_unref(id: MemId) {
     if let Some(a) = api() {
         // SAFETY: any id is accepted (an unknown one is ignored by the runtime).
         unsafe { (a.shm_unref)(id) };

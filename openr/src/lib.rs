@@ -8,6 +8,9 @@
 //! protocol (object-model 2.8) with the C++ message layouts, so Rust subjects feed C++
 //! observers and the other way round.
 //!
+//! Ids keep the distinct types of `openr-sys` ([`MemId`], [`Selector`],
+//! [`robot::PrimitiveId`]), so one cannot be passed where another is expected.
+//!
 //! ```no_run
 //! use openr::{Context, NotifyEvent, Object, Observer, ReadyEvent, Subject};
 //!
@@ -46,6 +49,10 @@ mod shm;
 pub use comm::{observer_selectors, subject_selectors, MAX_OBSERVERS, MAX_SUBJECTS, SEL_EVENT};
 pub use console::Priority;
 pub use object::{Context, NotifyEvent, Object, Observer, ReadyEvent, Status, Subject};
+/// The host table's id types (one declaration, in `openr-sys`): a region's [`MemId`]
+/// (`Region::mem_id`), an entry's [`Selector`] (`ReadyEvent::observer`,
+/// `NotifyEvent::subject`, [`SEL_EVENT`]); `robot::PrimitiveId` is openr-sys's too.
+pub use openr_sys::{MemId, Selector};
 pub use payload::{Payload, Plain};
 pub use shm::Region;
 
@@ -57,14 +64,14 @@ pub const ENTRY_ROWS: usize = 4 + 2 * MAX_SUBJECTS + 2 * MAX_OBSERVERS + 2;
 #[doc(hidden)]
 pub unsafe extern "C" fn __entry<T: Object, const SEL: u32>(msg: *mut std::ffi::c_void) {
     // SAFETY: the runtime calls entry SEL with that entry's message.
-    unsafe { object::dispatch::<T>(SEL, msg) }
+    unsafe { object::dispatch::<T>(abi::Selector(SEL), msg) }
 }
 
 /// The entry table of object type `T` (what `object!` exports as `ObjectEntryTable`).
 pub const fn entry_table<T: Object>() -> [abi::EntryRow; ENTRY_ROWS] {
     macro_rules! rows {
         ($($n:literal),*) => {
-            [$(abi::EntryRow { selector: $n, entry: Some(__entry::<T, $n>) },)*
+            [$(abi::EntryRow { selector: abi::Selector($n), entry: Some(__entry::<T, $n>) },)*
              abi::EntryRow { selector: abi::UNDEF, entry: None }]
         };
     }
@@ -104,7 +111,7 @@ pub mod __glue {
 
     /// # Safety
     /// As `make_reason`; `name` is NULL or a C string.
-    pub unsafe fn make_connect(command: i32, oid: *mut c_void, selector: u32, name: *const c_char, buf: *mut c_void, cap: usize) -> usize {
+    pub unsafe fn make_connect(command: i32, oid: *mut c_void, selector: abi::Selector, name: *const c_char, buf: *mut c_void, cap: usize) -> usize {
         let mut m = OConnectMessage { msg_type: abi::OMSG_CONNECT, command: command as u32, entry: OServiceEntry { oid, selector }, sub_name: [0; 128] };
         if !name.is_null() {
             // SAFETY: a C string per the contract.
@@ -162,7 +169,7 @@ macro_rules! object {
         pub unsafe extern "C" fn openr_make_connect_message(
             command: i32,
             oid: *mut ::std::ffi::c_void,
-            selector: u32,
+            selector: $crate::abi::Selector,
             name: *const ::std::ffi::c_char,
             buf: *mut ::std::ffi::c_void,
             cap: usize,
@@ -186,8 +193,8 @@ mod tests {
 
     #[test]
     fn every_selector_maps_back_to_its_slot() {
-        assert_eq!(entry_of(0), Entry::Init);
-        assert_eq!(entry_of(3), Entry::Destroy);
+        assert_eq!(entry_of(abi::Selector(0)), Entry::Init);
+        assert_eq!(entry_of(abi::Selector(3)), Entry::Destroy);
         for k in 0..MAX_SUBJECTS {
             let (c, r) = subject_selectors(k);
             assert_eq!((entry_of(c), entry_of(r)), (Entry::Control(k), Entry::Ready(k)));
@@ -196,8 +203,8 @@ mod tests {
             let (c, n) = observer_selectors(k);
             assert_eq!((entry_of(c), entry_of(n)), (Entry::Connect(k), Entry::Notify(k)));
         }
-        assert_eq!(observer_selectors(MAX_OBSERVERS - 1).1 as usize, ENTRY_ROWS - 3);
-        assert_eq!((entry_of(SEL_EVENT), SEL_EVENT as usize), (Entry::Event, ENTRY_ROWS - 2));
+        assert_eq!(observer_selectors(MAX_OBSERVERS - 1).1 .0 as usize, ENTRY_ROWS - 3);
+        assert_eq!((entry_of(SEL_EVENT), SEL_EVENT.0 as usize), (Entry::Event, ENTRY_ROWS - 2));
     }
 
     #[test]
@@ -214,7 +221,7 @@ mod tests {
         let mut buf = [0u8; 256];
         let name = c"A.B.c.S";
         // SAFETY: `name` is a C string; `buf` has `buf.len()` writable bytes.
-        let n = unsafe { __glue::make_connect(0, 0x8000_0040usize as *mut _, 9, name.as_ptr(), buf.as_mut_ptr().cast(), buf.len()) };
+        let n = unsafe { __glue::make_connect(0, 0x8000_0040usize as *mut _, abi::Selector(9), name.as_ptr(), buf.as_mut_ptr().cast(), buf.len()) };
         assert_eq!(n, 152);
         assert_eq!(&buf[0..4], &abi::OMSG_CONNECT.to_ne_bytes());
         assert_eq!(&buf[8..16], &0x8000_0040usize.to_ne_bytes());

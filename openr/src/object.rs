@@ -6,7 +6,7 @@ use std::cell::RefCell;
 use std::ffi::c_void;
 use std::marker::PhantomData;
 
-use crate::abi::{self, OConnectMessage, OControlMessage, ONotifyMessage, OReadyMessage, OServiceEntry, OStatusMessage};
+use crate::abi::{self, OConnectMessage, OControlMessage, ONotifyMessage, OReadyMessage, OServiceEntry, OStatusMessage, Selector};
 use crate::comm::{self, Entry, ObserverState, SubjectState};
 use crate::console::{osyslog, Priority};
 use crate::host;
@@ -67,7 +67,7 @@ impl ReadyEvent {
         !self.assert
     }
     /// The observer's (OID address, Notify selector).
-    pub fn observer(&self) -> (usize, u32) {
+    pub fn observer(&self) -> (usize, Selector) {
         (self.observer.oid as usize, self.observer.selector)
     }
 }
@@ -90,7 +90,7 @@ impl NotifyEvent {
         self.units
     }
     /// The subject's (OID address, Ready selector).
-    pub fn subject(&self) -> (usize, u32) {
+    pub fn subject(&self) -> (usize, Selector) {
         (self.subject.oid as usize, self.subject.selector)
     }
 }
@@ -291,7 +291,7 @@ impl Context {
     }
 }
 
-fn register(service: &str, selector: u32) {
+fn register(service: &str, selector: Selector) {
     match host::register_service(service, selector) {
         0 => {}
         1 => osyslog(Priority::Error, &format!("service `{service}` is already registered")),
@@ -333,7 +333,7 @@ fn with_context<R>(f: impl FnOnce(&mut Context) -> R) -> Option<R> {
 ///
 /// # Safety
 /// `msg` points to the message for selector `sel`, as the runtime delivers it.
-pub unsafe fn dispatch<T: Object>(sel: u32, msg: *mut c_void) {
+pub unsafe fn dispatch<T: Object>(sel: Selector, msg: *mut c_void) {
     // SAFETY: `msg` is the message for `sel` (this function's contract, passed on).
     let run = std::panic::AssertUnwindSafe(|| unsafe { dispatch_inner::<T>(sel, msg) });
     if std::panic::catch_unwind(run).is_err() {
@@ -344,7 +344,7 @@ pub unsafe fn dispatch<T: Object>(sel: u32, msg: *mut c_void) {
     }
 }
 
-unsafe fn dispatch_inner<T: Object>(sel: u32, msg: *mut c_void) {
+unsafe fn dispatch_inner<T: Object>(sel: Selector, msg: *mut c_void) {
     match comm::entry_of(sel) {
         Entry::Init => {
             let mut ctx = Context::new();

@@ -45,24 +45,24 @@ fn api() -> Result<&'static abi::openr_host_api> {
     host::api().ok_or(OStatus::FAIL)
 }
 
-/// `OPrimitiveID`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct PrimitiveId(pub u32);
+/// `OPrimitiveID`: the host table's own type (`openr_sys::PrimitiveId`), so a primitive
+/// id cannot be passed where a memory id or a selector is expected.
+pub use openr_sys::PrimitiveId;
 
 /// `OPENR::OpenPrimitive(locator, &id)`.
 pub fn open_primitive(locator: &str) -> Result<PrimitiveId> {
     let a = api()?;
     let c = CString::new(locator).map_err(|_| OStatus::INVALID_ARG)?;
-    let mut id = 0;
+    let mut id = PrimitiveId::default();
     // SAFETY: a C string and a live out-parameter.
     check(unsafe { (a.open_primitive)(c.as_ptr(), &mut id) })?;
-    Ok(PrimitiveId(id))
+    Ok(id)
 }
 
 /// `OPENR::ClosePrimitive(id)`.
 pub fn close_primitive(id: PrimitiveId) -> Result<()> {
     // SAFETY: any id is accepted (an unknown one is an error status).
-    check(unsafe { (api()?.close_primitive)(id.0) })
+    check(unsafe { (api()?.close_primitive)(id) })
 }
 
 /// `OPENR::SetMotorPower(opowerON / opowerOFF)`.
@@ -115,7 +115,7 @@ impl Gain {
 
 fn gain_op(op: i32, id: PrimitiveId, gains: &mut [u16; 6]) -> Result<()> {
     // SAFETY: six u16 read or written.
-    check(unsafe { (api()?.joint_gain)(op, id.0, gains.as_mut_ptr()) })
+    check(unsafe { (api()?.joint_gain)(op, id, gains.as_mut_ptr()) })
 }
 
 /// `OPENR::EnableJointGain(id)`.
@@ -167,7 +167,7 @@ fn le_u16(b: &[u8], o: usize) -> u16 {
 pub fn joint_value(id: PrimitiveId) -> Result<JointValue> {
     let mut b = [0u8; 16];
     // SAFETY: `b` is 16 writable bytes, the `value16` the table's `joint_value` fills.
-    check(unsafe { (api()?.joint_value)(id.0, b.as_mut_ptr().cast()) })?;
+    check(unsafe { (api()?.joint_value)(id, b.as_mut_ptr().cast()) })?;
     Ok(JointValue {
         value_urad: le_i32(&b, 0),
         signal: le_u16(&b, 4),
@@ -181,7 +181,7 @@ pub fn joint_value(id: PrimitiveId) -> Result<JointValue> {
 pub fn sensor_value(id: PrimitiveId) -> Result<SensorValue> {
     let mut b = [0u8; 16];
     // SAFETY: `b` is 16 writable bytes, the `value16` the table's `sensor_value` fills.
-    check(unsafe { (api()?.sensor_value)(id.0, b.as_mut_ptr().cast()) })?;
+    check(unsafe { (api()?.sensor_value)(id, b.as_mut_ptr().cast()) })?;
     Ok(SensorValue { value: le_i32(&b, 0), signal: le_u16(&b, 4) })
 }
 
@@ -204,7 +204,7 @@ impl CommandVector {
     /// A vector of `n` slots, initialised as robot-api 6.3 says (numData 0).
     pub fn new(n: usize) -> Result<CommandVector> {
         let a = api()?;
-        let (mut mem_id, mut base) = (0u32, std::ptr::null_mut());
+        let (mut mem_id, mut base) = (abi::MemId::default(), std::ptr::null_mut());
         // SAFETY: live out-parameters.
         check(unsafe { (a.new_vector)(abi::VECTOR_COMMAND, n, 0, &mut mem_id, &mut base) })?;
         let size = host::shm_base(mem_id).map(|(_, s)| s).unwrap_or(HEADER + 160 * n);

@@ -4,14 +4,15 @@
 use std::collections::HashMap;
 use std::sync::Mutex;
 
+use crate::abi::MemId;
 use crate::host;
 
 /// References this process's Rust code holds per block: live `Region` handles plus the
 /// subject references travelling with notifications (given back by READY). The host's
 /// count is not visible, so `CommandVector::in_use` asks this one.
-static RUST_REFS: Mutex<Option<HashMap<u32, usize>>> = Mutex::new(None);
+static RUST_REFS: Mutex<Option<HashMap<MemId, usize>>> = Mutex::new(None);
 
-fn count(mem_id: u32, up: bool) {
+fn count(mem_id: MemId, up: bool) {
     let mut g = RUST_REFS.lock().unwrap_or_else(|e| e.into_inner());
     let m = g.get_or_insert_with(HashMap::new);
     if up {
@@ -25,14 +26,14 @@ fn count(mem_id: u32, up: bool) {
 }
 
 /// Rust-side references on `mem_id` (see `RUST_REFS`).
-pub(crate) fn rust_refs(mem_id: u32) -> usize {
+pub(crate) fn rust_refs(mem_id: MemId) -> usize {
     let g = RUST_REFS.lock().unwrap_or_else(|e| e.into_inner());
     g.as_ref().and_then(|m| m.get(&mem_id).copied()).unwrap_or(0)
 }
 
 /// A subject's reference came back in a READY message (the host reference is dropped
 /// by the caller).
-pub(crate) fn token_returned(mem_id: u32) {
+pub(crate) fn token_returned(mem_id: MemId) {
     count(mem_id, false);
 }
 
@@ -40,7 +41,7 @@ pub(crate) fn token_returned(mem_id: u32) {
 /// cloned, `shm_unref` when dropped.
 #[derive(Debug)]
 pub struct Region {
-    mem_id: u32,
+    mem_id: MemId,
     offset: usize,
     base: *mut u8,
     size: usize,
@@ -56,7 +57,7 @@ impl Region {
 
     /// Takes a new reference on `size` bytes at `offset` of an existing block
     /// (`shm_ref`); `None` if the block is unknown or the window does not fit.
-    pub fn attach(mem_id: u32, offset: usize, size: usize) -> Option<Region> {
+    pub fn attach(mem_id: MemId, offset: usize, size: usize) -> Option<Region> {
         let (block, total) = host::shm_base(mem_id)?;
         if offset.checked_add(size)? > total {
             return None;
@@ -69,13 +70,13 @@ impl Region {
 
     /// Adopts the one host reference the caller holds on a whole block (e.g. from
     /// `new_vector`).
-    pub(crate) fn adopt(mem_id: u32, base: *mut u8, size: usize) -> Region {
+    pub(crate) fn adopt(mem_id: MemId, base: *mut u8, size: usize) -> Region {
         count(mem_id, true);
         Region { mem_id, offset: 0, base, size }
     }
 
     /// The host's id of the block (`MemoryRegionID`).
-    pub fn mem_id(&self) -> u32 {
+    pub fn mem_id(&self) -> MemId {
         self.mem_id
     }
 

@@ -2,6 +2,7 @@
 //! DESIGNDB.CFG names for a keyword, gunzipped, into shared memory.
 
 use crate::runtime::Runtime;
+use openr_sys::DesignDataId;
 
 pub const O_FAIL: u32 = 2;
 pub const O_INVALID_ARG: u32 = 4;
@@ -10,7 +11,7 @@ pub const O_NOT_FOUND: u32 = 6;
 pub const O_DESIGNDATA_SIZE_ZERO: u32 = 4110;
 
 /// Returns (id, base, size) or an OStatus error code.
-pub fn find(rt: &Runtime, keyword: &str) -> Result<(u32, *mut u8, usize), u32> {
+pub fn find(rt: &Runtime, keyword: &str) -> Result<(DesignDataId, *mut u8, usize), u32> {
     let content = if keyword == "SYS_CPUINFO" {
         cpu_info()
     } else {
@@ -25,16 +26,18 @@ pub fn find(rt: &Runtime, keyword: &str) -> Result<(u32, *mut u8, usize), u32> {
     let (id, base) = rt.shm.alloc(content.len()).ok_or(O_NO_MEMORY)?;
     // SAFETY: freshly allocated region of content.len() bytes.
     unsafe { std::ptr::copy_nonoverlapping(content.as_ptr(), base, content.len()) };
-    rt.design_data.lock().unwrap_or_else(|p| p.into_inner()).push(id);
-    Ok((id, base, content.len()))
+    // The design-data id is the region's number; the pair keeps which region it names.
+    let data_id = DesignDataId(id.0);
+    rt.design_data.lock().unwrap_or_else(|p| p.into_inner()).push((data_id, id));
+    Ok((data_id, base, content.len()))
 }
 
-pub fn delete(rt: &Runtime, id: u32) -> u32 {
+pub fn delete(rt: &Runtime, id: DesignDataId) -> u32 {
     let mut ids = rt.design_data.lock().unwrap_or_else(|p| p.into_inner());
-    match ids.iter().position(|i| *i == id) {
+    match ids.iter().position(|(i, _)| *i == id) {
         Some(pos) => {
-            ids.swap_remove(pos);
-            rt.shm.unref(id);
+            let (_, mem) = ids.swap_remove(pos);
+            rt.shm.unref(mem);
             0
         }
         None => O_INVALID_ARG,

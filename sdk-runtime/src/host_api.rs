@@ -10,6 +10,8 @@ use std::ptr;
 use std::sync::atomic::Ordering;
 use std::time::Duration;
 
+use openr_sys::{DesignDataId, MemId, Selector, TimerId};
+
 use crate::object;
 use crate::power::{Observer, PowerState, ORSB_MOTOR_POWER};
 use crate::runtime::{CallError, Runtime};
@@ -144,7 +146,7 @@ pub(crate) fn self_name() -> *const c_char {
     NAME.with(|n| n.get_or_init(|| std::ffi::CString::new(name).unwrap_or_default()).as_ptr())
 }
 
-pub(crate) unsafe fn send(dest: *mut c_void, selector: u32, msg: *const c_void, size: usize) -> i32 {
+pub(crate) unsafe fn send(dest: *mut c_void, selector: Selector, msg: *const c_void, size: usize) -> i32 {
     let Some(rt) = rt() else { return -1 };
     // SAFETY: `msg` holds `size` readable bytes or is null (the host API's contract); copied at once.
     let data = object::message(unsafe { bytes(msg, size) });
@@ -156,7 +158,7 @@ pub(crate) unsafe fn send(dest: *mut c_void, selector: u32, msg: *const c_void, 
 
 pub(crate) unsafe fn call(
     dest: *mut c_void,
-    selector: u32,
+    selector: Selector,
     msg: *const c_void,
     size: usize,
     reply: *mut c_void,
@@ -196,7 +198,7 @@ pub(crate) unsafe fn reply(msg: *const c_void, size: usize) -> i32 {
     }
 }
 
-pub(crate) unsafe fn register_service(name: *const c_char, oid: *mut c_void, selector: u32) -> i32 {
+pub(crate) unsafe fn register_service(name: *const c_char, oid: *mut c_void, selector: Selector) -> i32 {
     // SAFETY: `name` is the object's C string or null (the host API's contract).
     let (Some(rt), Some(name)) = (rt(), unsafe { cstr(name) }) else { return 1 };
     if rt.register(name, oid as usize, selector) {
@@ -217,7 +219,7 @@ pub(crate) unsafe fn console_write(text: *const c_char, len: usize) {
     crate::console::write(unsafe { bytes(text.cast(), len) });
 }
 
-pub(crate) unsafe fn shm_alloc(size: usize, mem_id: *mut u32) -> *mut c_void {
+pub(crate) unsafe fn shm_alloc(size: usize, mem_id: *mut MemId) -> *mut c_void {
     let Some((id, base)) = rt().and_then(|rt| rt.shm.alloc(size)) else { return ptr::null_mut() };
     if !mem_id.is_null() {
         // SAFETY: out-param.
@@ -226,7 +228,7 @@ pub(crate) unsafe fn shm_alloc(size: usize, mem_id: *mut u32) -> *mut c_void {
     base.cast()
 }
 
-pub(crate) unsafe fn shm_base(mem_id: u32, size: *mut usize) -> *mut c_void {
+pub(crate) unsafe fn shm_base(mem_id: MemId, size: *mut usize) -> *mut c_void {
     let Some((base, n)) = rt().and_then(|rt| rt.shm.base(mem_id)) else { return ptr::null_mut() };
     if !size.is_null() {
         // SAFETY: out-param.
@@ -235,13 +237,13 @@ pub(crate) unsafe fn shm_base(mem_id: u32, size: *mut usize) -> *mut c_void {
     base.cast()
 }
 
-pub(crate) fn shm_ref(mem_id: u32) {
+pub(crate) fn shm_ref(mem_id: MemId) {
     if let Some(rt) = rt() {
         rt.shm.add_ref(mem_id);
     }
 }
 
-pub(crate) fn shm_unref(mem_id: u32) {
+pub(crate) fn shm_unref(mem_id: MemId) {
     if let Some(rt) = rt() {
         rt.shm.unref(mem_id);
     }
@@ -336,15 +338,15 @@ pub(crate) fn robot_design() -> *const c_char {
     rt().map_or(c"ERS-7".as_ptr(), |rt| rt.design.as_ptr())
 }
 
-pub(crate) unsafe fn find_design_data(keyword: *const c_char, id: *mut u32, data: *mut *mut c_void, size: *mut usize) -> u32 {
+pub(crate) unsafe fn find_design_data(keyword: *const c_char, id: *mut DesignDataId, data: *mut *mut c_void, size: *mut usize) -> u32 {
     // SAFETY: `keyword` is the object's C string or null (the host API's contract).
     let (Some(rt), Some(key)) = (rt(), unsafe { cstr(keyword) }) else { return crate::design::O_FAIL };
     match crate::design::find(rt, key) {
-        Ok((mem_id, base, n)) => {
+        Ok((data_id, base, n)) => {
             // SAFETY: out-params.
             unsafe {
                 if !id.is_null() {
-                    *id = mem_id;
+                    *id = data_id;
                 }
                 if !data.is_null() {
                     *data = base.cast();
@@ -359,19 +361,19 @@ pub(crate) unsafe fn find_design_data(keyword: *const c_char, id: *mut u32, data
     }
 }
 
-pub(crate) fn delete_design_data(id: u32) -> u32 {
+pub(crate) fn delete_design_data(id: DesignDataId) -> u32 {
     rt().map_or(crate::design::O_INVALID_ARG, |rt| crate::design::delete(rt, id))
 }
 
-pub(crate) unsafe fn set_timer(dest: *mut c_void, selector: u32, msg: *const c_void, size: usize, after_ms: u32, period_ms: u32) -> u32 {
-    let Some(rt) = rt() else { return 0 };
+pub(crate) unsafe fn set_timer(dest: *mut c_void, selector: Selector, msg: *const c_void, size: usize, after_ms: u32, period_ms: u32) -> TimerId {
+    let Some(rt) = rt() else { return TimerId::NONE };
     // SAFETY: `msg` holds `size` readable bytes or is null (the host API's contract); copied at once.
     let data = object::message(unsafe { bytes(msg, size) });
     let period = (period_ms > 0).then(|| Duration::from_millis(period_ms.into()));
     rt.timers.add(rt.clock.since_boot(), dest as usize, selector, data, Duration::from_millis(after_ms.into()), period)
 }
 
-pub(crate) fn cancel_timer(id: u32) -> i32 {
+pub(crate) fn cancel_timer(id: TimerId) -> i32 {
     match rt() {
         Some(rt) if rt.timers.cancel(id) => 0,
         _ => -1,
@@ -396,7 +398,7 @@ pub(crate) unsafe fn power_status(out: *mut PowerState) {
     }
 }
 
-pub(crate) unsafe fn observe_power(oid: *mut c_void, selector: u32, filter: *const PowerState) -> u32 {
+pub(crate) unsafe fn observe_power(oid: *mut c_void, selector: Selector, filter: *const PowerState) -> u32 {
     let Some(rt) = rt() else { return crate::design::O_FAIL };
     if filter.is_null() {
         return if rt.power.unobserve(oid as usize, selector) { 0 } else { 6 };

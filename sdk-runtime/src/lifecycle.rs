@@ -14,6 +14,8 @@ use std::sync::mpsc::{Receiver, RecvTimeoutError};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+use openr_sys::Selector;
+
 use crate::cfg;
 use crate::error::{Error, Result};
 use crate::object::ObjectSlot;
@@ -21,10 +23,10 @@ use crate::runtime::{Runtime, FIRST_OID};
 
 const OREASON_BOOT: u32 = 0;
 const OREASON_SHUTDOWN: u32 = 1;
-const SEL_INIT: u32 = 0;
-const SEL_START: u32 = 1;
-const SEL_STOP: u32 = 2;
-const SEL_DESTROY: u32 = 3;
+const SEL_INIT: Selector = Selector(0);
+const SEL_START: Selector = Selector(1);
+const SEL_STOP: Selector = Selector(2);
+const SEL_DESTROY: Selector = Selector(3);
 
 /// What the boot sequence or the shutdown could not get: one line per object.
 #[derive(Debug, Default)]
@@ -35,19 +37,19 @@ pub struct Failures(pub Vec<String>);
 pub struct Interrupted(pub i32);
 
 /// `DoInit`, … for the four hooks, else the selector.
-pub fn entry_name(sel: u32) -> String {
+pub fn entry_name(sel: Selector) -> String {
     match sel {
         SEL_INIT => "DoInit".into(),
         SEL_START => "DoStart".into(),
         SEL_STOP => "DoStop".into(),
         SEL_DESTROY => "DoDestroy".into(),
-        u32::MAX => "a message".into(),
+        Selector::UNDEF => "a message".into(),
         s => format!("the entry for selector {s}"),
     }
 }
 
-fn hook_name(sel: u32) -> &'static str {
-    ["Init", "Start", "Stop", "Destroy"][sel as usize]
+fn hook_name(sel: Selector) -> &'static str {
+    ["Init", "Start", "Stop", "Destroy"][sel.0 as usize]
 }
 
 /// How long a caller waits.
@@ -92,7 +94,7 @@ fn await_answer(
 }
 
 /// What object `slot` is running, for a failure message.
-fn doing(rt: &Runtime, slot: &ObjectSlot, asked: u32) -> String {
+fn doing(rt: &Runtime, slot: &ObjectSlot, asked: Selector) -> String {
     match rt.sched.running(slot.index) {
         Some(sel) if sel != asked => format!("it is still running {}", entry_name(sel)),
         _ => format!("it is still running {}", entry_name(asked)),
@@ -101,7 +103,14 @@ fn doing(rt: &Runtime, slot: &ObjectSlot, asked: u32) -> String {
 
 /// Runs one life-cycle hook as a call, once every object is idle (so the run does not
 /// depend on timing), and reports a non-success status.
-fn hook(rt: &Runtime, slot: &ObjectSlot, sel: u32, watchdog: Duration, patience: Patience, failures: &mut Failures) -> std::result::Result<(), Interrupted> {
+fn hook(
+    rt: &Runtime,
+    slot: &ObjectSlot,
+    sel: Selector,
+    watchdog: Duration,
+    patience: Patience,
+    failures: &mut Failures,
+) -> std::result::Result<(), Interrupted> {
     let module = slot.module.get().expect("loaded");
     let what = hook_name(sel);
     let reason = if sel <= SEL_START { OREASON_BOOT } else { OREASON_SHUTDOWN };

@@ -7,9 +7,12 @@
 use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
 use std::sync::OnceLock;
 
+use openr_sys::Selector;
+
 use crate::runtime::Service;
 
-const UNSET: u32 = u32::MAX;
+/// `entry` before the first message: `Selector::UNDEF`, which no entry has.
+const UNSET: u32 = Selector::UNDEF.0;
 
 /// One way of a connection: messages from object `from` to object `to`'s entry `entry`.
 #[derive(Debug)]
@@ -17,7 +20,8 @@ pub struct Way {
     from: usize,
     to: usize,
     /// The registered entry (Control, Connect): the handshake, not counted.
-    registered: u32,
+    registered: Selector,
+    /// The entry's selector (`Selector.0`, atomic), or `UNSET`.
     entry: AtomicU32,
     /// Messages delivered this way.
     pub count: AtomicU64,
@@ -28,7 +32,7 @@ impl Way {
         Way { from: from.oid, to: to.oid, registered: to.selector, entry: AtomicU32::new(UNSET), count: AtomicU64::new(0) }
     }
 
-    fn is(&self, sender: usize, dest: usize, selector: u32) -> bool {
+    fn is(&self, sender: usize, dest: usize, selector: Selector) -> bool {
         self.from == sender && self.to == dest && self.registered != selector
     }
 }
@@ -65,7 +69,7 @@ impl Links {
 
     /// Counts a message `sender` (an OID, asked only for a message to a connected
     /// object) sent to `(dest, selector)`.
-    pub fn count(&self, sender: impl Fn() -> Option<usize>, dest: usize, selector: u32) {
+    pub fn count(&self, sender: impl Fn() -> Option<usize>, dest: usize, selector: Selector) {
         let Some(links) = self.made.get() else { return };
         if !links.iter().any(|l| l.notify.to == dest || l.ready.to == dest) {
             return;
@@ -75,8 +79,8 @@ impl Links {
         // The way whose entry this is; else the first between these objects whose entry
         // is not known yet takes it.
         let way = ways()
-            .find(|w| w.entry.load(Ordering::Relaxed) == selector)
-            .or_else(|| ways().find(|w| w.entry.compare_exchange(UNSET, selector, Ordering::Relaxed, Ordering::Relaxed).is_ok()));
+            .find(|w| w.entry.load(Ordering::Relaxed) == selector.0)
+            .or_else(|| ways().find(|w| w.entry.compare_exchange(UNSET, selector.0, Ordering::Relaxed, Ordering::Relaxed).is_ok()));
         if let Some(w) = way {
             w.count.fetch_add(1, Ordering::Relaxed);
         }

@@ -9,17 +9,18 @@ use std::io::Read;
 use std::path::Path;
 
 use crate::error::{Error, Result};
+use openr_sys::Selector;
 
 /// An entry function: receives a pointer to the message bytes.
 pub type EntryFn = unsafe extern "C" fn(*mut c_void);
 type MakeReason = unsafe extern "C" fn(u32, *mut c_void, usize) -> usize;
-type MakeConnect = unsafe extern "C" fn(i32, *mut c_void, u32, *const libc::c_char, *mut c_void, usize) -> usize;
+type MakeConnect = unsafe extern "C" fn(i32, *mut c_void, Selector, *const libc::c_char, *mut c_void, usize) -> usize;
 type ReadStatus = unsafe extern "C" fn(*const c_void, usize) -> u32;
 pub type MakePower = unsafe extern "C" fn(*const c_void, *mut c_void, usize) -> usize;
 
 /// A loaded object module.
 pub struct Module {
-    entries: Vec<(u32, EntryFn)>,
+    entries: Vec<(Selector, EntryFn)>,
     make_reason: MakeReason,
     make_connect: MakeConnect,
     read_status: ReadStatus,
@@ -33,7 +34,7 @@ pub struct Module {
 // module's code is only run on its object's thread, but building messages (pure
 // functions) may happen anywhere.
 
-const UNDEF: u32 = 0xffff_ffff;
+const UNDEF: Selector = Selector::UNDEF;
 
 /// Reads a `.BIN`: gzip or plain ELF, checked by [`crate::elf_check::validate`] so that a
 /// damaged file is an error naming it rather than a signal inside `dlopen`. Errors name
@@ -138,7 +139,7 @@ impl Module {
             // SAFETY: the runtime's buffer of `cap` bytes (`build`).
             unsafe { openr::__glue::make_reason(r, buf, cap) }
         }
-        unsafe extern "C" fn connect(c: i32, oid: *mut c_void, sel: u32, name: *const libc::c_char, buf: *mut c_void, cap: usize) -> usize {
+        unsafe extern "C" fn connect(c: i32, oid: *mut c_void, sel: Selector, name: *const libc::c_char, buf: *mut c_void, cap: usize) -> usize {
             // SAFETY: a C string and the runtime's buffer of `cap` bytes (`connect_message`).
             unsafe { openr::__glue::make_connect(c, oid, sel, name, buf, cap) }
         }
@@ -151,7 +152,7 @@ impl Module {
     }
 
     /// The entry function for `selector`.
-    pub fn entry(&self, selector: u32) -> Option<EntryFn> {
+    pub fn entry(&self, selector: Selector) -> Option<EntryFn> {
         self.entries.iter().find(|(s, _)| *s == selector).map(|(_, f)| *f)
     }
 
@@ -160,7 +161,7 @@ impl Module {
         build(|buf, cap| unsafe { (self.make_reason)(reason, buf, cap) })
     }
 
-    pub fn connect_message(&self, command: i32, subject_oid: usize, subject_selector: u32, sub_name: &str) -> Vec<u8> {
+    pub fn connect_message(&self, command: i32, subject_oid: usize, subject_selector: Selector, sub_name: &str) -> Vec<u8> {
         let name = CString::new(sub_name).unwrap_or_default();
         // SAFETY: `name` outlives the call; `buf` holds `cap` writable bytes (`build`).
         build(|buf, cap| unsafe { (self.make_connect)(command, subject_oid as *mut c_void, subject_selector, name.as_ptr(), buf, cap) })
@@ -209,10 +210,10 @@ fn table_rows(table: *mut c_void, row: usize) -> Option<usize> {
 
 /// Reads `{Selector selector; Entry entry;}` rows until `selector == UNDEF`, never past
 /// the array's own size (its symbol's `st_size`, else at most 4096 rows).
-fn read_entry_table(table: *mut c_void) -> std::result::Result<Vec<(u32, EntryFn)>, String> {
+fn read_entry_table(table: *mut c_void) -> std::result::Result<Vec<(Selector, EntryFn)>, String> {
     #[repr(C)]
     struct Row {
-        selector: u32,
+        selector: Selector,
         entry: *mut c_void,
     }
     let sized = table_rows(table, std::mem::size_of::<Row>());

@@ -6,6 +6,7 @@ use std::ffi::{c_char, c_void};
 use std::sync::{Arc, OnceLock};
 
 use openr_ipstack::{EncodeFn, Net, NetOptions, Request};
+use openr_sys::{EndpointId, Selector};
 
 use crate::runtime::Runtime;
 
@@ -72,7 +73,7 @@ impl openr_ipstack::Report for RuntimeHost {
 }
 
 impl openr_ipstack::Host for RuntimeHost {
-    fn send(&self, oid: usize, selector: u32, message: Vec<u8>) {
+    fn send(&self, oid: usize, selector: Selector, message: Vec<u8>) {
         if let Some(rt) = self.0 {
             let _ = rt.send(oid, selector, message);
         }
@@ -91,11 +92,11 @@ pub use openr_sys::openr_net_api as NetApi;
 #[used]
 pub static openr_runtime_net_v1: NetApi = openr_sys::net_table!(crate::net, crate::host_api::panicked);
 
-pub(crate) fn endpoint_protocol(endpoint: u32) -> i32 {
+pub(crate) fn endpoint_protocol(endpoint: EndpointId) -> i32 {
     net().endpoint_protocol(endpoint)
 }
 
-pub(crate) unsafe fn submit(req: *const Request, blob: *mut c_void, size: usize, encode: EncodeFn, oid: *mut c_void, selector: u32, sync: i32) -> i32 {
+pub(crate) unsafe fn submit(req: *const Request, blob: *mut c_void, size: usize, encode: EncodeFn, oid: *mut c_void, selector: Selector, sync: i32) -> i32 {
     // SAFETY: the caller's (libantMCOOP's) pointers, as the table's contract says.
     unsafe { net().submit(req, blob, size, encode, oid, selector, sync != 0) }
 }

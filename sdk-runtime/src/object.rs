@@ -7,10 +7,11 @@ use std::sync::mpsc::{Receiver, SyncSender};
 use std::sync::{Arc, OnceLock};
 
 use crate::loader::Module;
+use openr_sys::Selector;
 
 /// A message on its way to an object.
 pub struct Envelope {
-    pub selector: u32,
+    pub selector: Selector,
     pub data: Vec<u8>,
     /// Present when the sender waits for `Reply`/`Return` (a `Call`).
     pub reply: Option<SyncSender<Vec<u8>>>,
@@ -61,7 +62,7 @@ thread_local! {
     /// The reply channel of the message being processed, until answered.
     static PENDING_REPLY: RefCell<Option<(SyncSender<Vec<u8>>, Option<usize>)>> = const { RefCell::new(None) };
     /// Object index and selector being run, read by the crash handler.
-    pub(crate) static RUNNING: Cell<(usize, u32)> = const { Cell::new((usize::MAX, u32::MAX)) };
+    pub(crate) static RUNNING: Cell<(usize, Selector)> = const { Cell::new((usize::MAX, Selector::UNDEF)) };
     /// `CURRENT` as a plain pointer: the crash handler reads it without touching the
     /// `RefCell` or the `Arc` (the slot outlives the thread).
     pub(crate) static CURRENT_SLOT: Cell<*const ObjectSlot> = const { Cell::new(std::ptr::null()) };
@@ -77,7 +78,7 @@ pub fn current_oid() -> Option<usize> {
 }
 
 pub(crate) fn set_current(slot: Arc<ObjectSlot>) {
-    RUNNING.with(|r| r.set((slot.index, u32::MAX)));
+    RUNNING.with(|r| r.set((slot.index, Selector::UNDEF)));
     if let Some(rt) = crate::runtime::Runtime::get() {
         rt.console.register_thread(slot.index);
     }
@@ -144,7 +145,7 @@ pub(crate) fn run_loop(slot: &ObjectSlot, warn: impl Fn(String)) -> ! {
         // SAFETY: `entry` is a function of the object's ObjectEntryTable (`void (*)(void*)`), given the
         // message bytes plus 64 bytes of slack, live for the call.
         unsafe { entry(env.data.as_mut_ptr().cast()) };
-        RUNNING.with(|r| r.set((slot.index, u32::MAX)));
+        RUNNING.with(|r| r.set((slot.index, Selector::UNDEF)));
         rt.console.handled(slot.index);
         // A call whose entry returned without Reply/Return gets an empty answer, so the
         // caller is never left waiting forever.

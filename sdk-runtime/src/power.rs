@@ -2,6 +2,8 @@
 //! observation, "every change" / "not notify" / target values for the scalar fields.
 use std::sync::Mutex;
 
+use openr_sys::Selector;
+
 /// `struct openr_power_state` (openr-sys).
 pub use openr_sys::openr_power_state as PowerState;
 
@@ -32,7 +34,7 @@ pub fn initial_state(time_dif: i32) -> PowerState {
 #[derive(Debug, Clone, Copy)]
 pub struct Observer {
     pub oid: usize,
-    pub selector: u32,
+    pub selector: Selector,
     pub filter: PowerState,
 }
 
@@ -75,7 +77,7 @@ impl Power {
         g.1.push(obs);
     }
 
-    pub fn unobserve(&self, oid: usize, selector: u32) -> bool {
+    pub fn unobserve(&self, oid: usize, selector: Selector) -> bool {
         let mut g = self.inner.lock().unwrap_or_else(|p| p.into_inner());
         let before = g.1.len();
         g.1.retain(|o| !(o.oid == oid && o.selector == selector));
@@ -97,7 +99,7 @@ mod tests {
     use super::*;
 
     fn observer(filter: PowerState) -> Observer {
-        Observer { oid: 1, selector: 8, filter }
+        Observer { oid: 1, selector: Selector(8), filter }
     }
 
     #[test]

@@ -1,9 +1,13 @@
 //! The OPENR:: hardware calls of `openr_host.h` (primitives, gains, readings, sync keys,
 //! data vectors) and the two calls system objects use (`vr_attach`, `vr_submit`).
 //! Each returns an OStatus value, as the OPENR:: function that forwards it.
+//!
+//! Ids arrive typed ([`PrimitiveId`], [`MemId`], [`SyncKey`], [`Selector`]); the
+//! robot model (`openr-robot`, no ABI dependency) numbers its primitives and sync keys
+//! with plain `u32`s, so they are unwrapped only where it is called.
 #![deny(unsafe_op_in_unsafe_fn)]
 
-use openr_sys as sys;
+use openr_sys::{self as sys, MemId, PrimitiveId, Selector, SyncKey};
 use std::ffi::{c_char, c_void, CStr};
 
 use crate::gateway::proxy;
@@ -17,7 +21,7 @@ fn with_robot<T>(f: impl FnOnce(&mut VirtualRobot) -> T) -> Option<T> {
     Runtime::get().map(|rt| f(&mut rt.vr.robot()))
 }
 
-pub unsafe fn open_primitive(locator: *const c_char, id: *mut u32) -> u32 {
+pub unsafe fn open_primitive(locator: *const c_char, id: *mut PrimitiveId) -> u32 {
     if locator.is_null() || id.is_null() {
         return O_INVALID_ARG;
     }
@@ -27,14 +31,14 @@ pub unsafe fn open_primitive(locator: *const c_char, id: *mut u32) -> u32 {
         let (st, out) = proxy::split(&reply);
         if let Some(p) = out.get(..4) {
             // SAFETY: out-param.
-            unsafe { *id = u32::from_le_bytes([p[0], p[1], p[2], p[3]]) };
+            unsafe { *id = PrimitiveId(u32::from_le_bytes([p[0], p[1], p[2], p[3]])) };
         }
         return st;
     }
     match with_robot(|r| r.open_primitive(&loc)) {
         Some(Ok(p)) => {
             // SAFETY: out-param.
-            unsafe { *id = p };
+            unsafe { *id = PrimitiveId(p) };
             O_SUCCESS
         }
         Some(Err(st)) => st,
@@ -42,19 +46,19 @@ pub unsafe fn open_primitive(locator: *const c_char, id: *mut u32) -> u32 {
     }
 }
 
-pub fn close_primitive(id: u32) -> u32 {
-    if let Some(reply) = proxy::call(proxy::CLOSE_PRIMITIVE, &id.to_le_bytes()) {
+pub fn close_primitive(id: PrimitiveId) -> u32 {
+    if let Some(reply) = proxy::call(proxy::CLOSE_PRIMITIVE, &id.0.to_le_bytes()) {
         return proxy::split(&reply).0;
     }
-    with_robot(|r| r.close_primitive(id)).unwrap_or(O_FAIL)
+    with_robot(|r| r.close_primitive(id.0)).unwrap_or(O_FAIL)
 }
 
 /// Device requests (robot-api 5). The camera's white balance, gain and shutter change
 /// the rendered image; the speaker and mic requests are accepted (the emulated
 /// amplifier has no volume or mute of its own).
-pub unsafe fn control_primitive(id: u32, req: u32, p: *const c_void, ps: usize, _r: *mut c_void, _rs: usize) -> u32 {
+pub unsafe fn control_primitive(id: PrimitiveId, req: u32, p: *const c_void, ps: usize, _r: *mut c_void, _rs: usize) -> u32 {
     with_robot(|r| {
-        if r.model().primitive(id).is_none() {
+        if r.model().primitive(id.0).is_none() {
             return O_INVALID_PRIMITIVE_ID;
         }
         if (384..=386).contains(&req) {
@@ -63,14 +67,14 @@ pub unsafe fn control_primitive(id: u32, req: u32, p: *const c_void, ps: usize, 
             }
             // SAFETY: OPrimitiveControl_CameraParam { longword camparam; }
             let camparam = unsafe { std::ptr::read_unaligned(p.cast::<u32>()) };
-            return r.camera_control(id, req, camparam);
+            return r.camera_control(id.0, req, camparam);
         }
         O_SUCCESS
     })
     .unwrap_or(O_FAIL)
 }
 
-pub unsafe fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
+pub unsafe fn joint_gain(op: i32, id: PrimitiveId, gains: *mut u16) -> u32 {
     let read = |g: *mut u16| -> Option<Gain> {
         if g.is_null() {
             return None;
@@ -89,6 +93,7 @@ pub unsafe fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
     if let Some(st) = proxied_gain(op, id, gains) {
         return st;
     }
+    let id = id.0;
     with_robot(|r| match op {
         sys::GAIN_ENABLE => r.enable_joint_gain(id),
         sys::GAIN_DISABLE => r.disable_joint_gain(id),
@@ -115,8 +120,8 @@ pub unsafe fn joint_gain(op: i32, id: u32, gains: *mut u16) -> u32 {
 }
 
 /// `joint_gain` on the robot of an RP host program (`None`: no proxy, run it here).
-fn proxied_gain(op: i32, id: u32, gains: *mut u16) -> Option<u32> {
-    let mut args = [op.to_le_bytes(), id.to_le_bytes()].concat();
+fn proxied_gain(op: i32, id: PrimitiveId, gains: *mut u16) -> Option<u32> {
+    let mut args = [op.to_le_bytes(), id.0.to_le_bytes()].concat();
     let mut words = [0u16; 6];
     if !gains.is_null() && matches!(op, sys::GAIN_SET | sys::GAIN_REGISTER_DEFAULT) {
         // SAFETY: six words from the object.
@@ -135,8 +140,8 @@ fn proxied_gain(op: i32, id: u32, gains: *mut u16) -> Option<u32> {
 }
 
 /// A 16-byte value read on the robot of an RP host program (`None`: no proxy).
-unsafe fn proxied_value(api: u8, id: u32, out: *mut c_void) -> Option<u32> {
-    let reply = proxy::call(api, &id.to_le_bytes())?;
+unsafe fn proxied_value(api: u8, id: PrimitiveId, out: *mut c_void) -> Option<u32> {
+    let reply = proxy::call(api, &id.0.to_le_bytes())?;
     let (st, v) = proxy::split(&reply);
     if st == O_SUCCESS && v.len() >= 16 {
         let mut b = [0u8; 16];
@@ -152,7 +157,7 @@ unsafe fn put16(out: *mut c_void, bytes: [u8; 16]) {
     unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.cast::<u8>(), 16) };
 }
 
-pub unsafe fn joint_value(id: u32, out: *mut c_void) -> u32 {
+pub unsafe fn joint_value(id: PrimitiveId, out: *mut c_void) -> u32 {
     if out.is_null() {
         return O_INVALID_ARG;
     }
@@ -160,7 +165,7 @@ pub unsafe fn joint_value(id: u32, out: *mut c_void) -> u32 {
     if let Some(st) = unsafe { proxied_value(proxy::JOINT_VALUE, id, out) } {
         return st;
     }
-    match with_robot(|r| r.joint_value(id)) {
+    match with_robot(|r| r.joint_value(id.0)) {
         Some(Ok(v)) => {
             // SAFETY: see put16.
             unsafe { put16(out, v.to_bytes()) };
@@ -171,7 +176,7 @@ pub unsafe fn joint_value(id: u32, out: *mut c_void) -> u32 {
     }
 }
 
-pub unsafe fn sensor_value(id: u32, out: *mut c_void) -> u32 {
+pub unsafe fn sensor_value(id: PrimitiveId, out: *mut c_void) -> u32 {
     if out.is_null() {
         return O_INVALID_ARG;
     }
@@ -179,7 +184,7 @@ pub unsafe fn sensor_value(id: u32, out: *mut c_void) -> u32 {
     if let Some(st) = unsafe { proxied_value(proxy::SENSOR_VALUE, id, out) } {
         return st;
     }
-    match with_robot(|r| r.sensor_value(id)) {
+    match with_robot(|r| r.sensor_value(id.0)) {
         Some(Ok(v)) => {
             // SAFETY: see put16.
             unsafe { put16(out, v.to_bytes()) };
@@ -190,11 +195,11 @@ pub unsafe fn sensor_value(id: u32, out: *mut c_void) -> u32 {
     }
 }
 
-pub unsafe fn sync_key(op: i32, key: u32, k1: *mut u32, k2: *mut u32) -> u32 {
-    let put = |p: *mut u32, v: u32| {
+pub unsafe fn sync_key(op: i32, key: SyncKey, k1: *mut SyncKey, k2: *mut SyncKey) -> u32 {
+    let put = |p: *mut SyncKey, v: u32| {
         if !p.is_null() {
             // SAFETY: out-param.
-            unsafe { *p = v };
+            unsafe { *p = SyncKey(v) };
         }
     };
     with_robot(|r| match op {
@@ -205,8 +210,8 @@ pub unsafe fn sync_key(op: i32, key: u32, k1: *mut u32, k2: *mut u32) -> u32 {
                 O_SUCCESS
             },
         ),
-        sys::SYNC_CANCEL => r.cancel_sync_key(key),
-        sys::SYNC_DIVIDE => r.divide_sync_key(key).map_or_else(
+        sys::SYNC_CANCEL => r.cancel_sync_key(key.0),
+        sys::SYNC_DIVIDE => r.divide_sync_key(key.0).map_or_else(
             |e| e,
             |(a, b)| {
                 put(k1, a);
@@ -239,7 +244,7 @@ fn cdt_vector_init(buf: &mut [u8]) {
     }
 }
 
-pub unsafe fn new_vector(kind: i32, n: usize, data_size: usize, mem_id: *mut u32, base: *mut *mut c_void) -> u32 {
+pub unsafe fn new_vector(kind: i32, n: usize, data_size: usize, mem_id: *mut MemId, base: *mut *mut c_void) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
     if mem_id.is_null() || base.is_null() || n == 0 || n > 4096 || data_size > 1 << 24 {
         return O_INVALID_ARG;
@@ -268,7 +273,7 @@ pub unsafe fn new_vector(kind: i32, n: usize, data_size: usize, mem_id: *mut u32
         sys::VECTOR_SENSOR => vectors::sensor_vector_init(buf, n).is_ok(),
         _ => image.write_header(buf, u32::MAX, u32::MAX).is_ok(),
     };
-    if !init || vectors::set_region_fields(buf, id, 0, total as u32).is_err() {
+    if !init || vectors::set_region_fields(buf, id.0, 0, total as u32).is_err() {
         rt.shm.unref(id);
         return O_FAIL;
     }
@@ -281,7 +286,7 @@ pub unsafe fn new_vector(kind: i32, n: usize, data_size: usize, mem_id: *mut u32
     O_SUCCESS
 }
 
-pub fn delete_vector(mem_id: u32) -> u32 {
+pub fn delete_vector(mem_id: MemId) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
     let mut v = rt.vectors.lock().unwrap_or_else(|p| p.into_inner());
     match v.iter().position(|i| *i == mem_id) {
@@ -296,7 +301,7 @@ pub fn delete_vector(mem_id: u32) -> u32 {
 
 /// `SetCdtVectorData`: the camera detects colours with these tables from the next
 /// image on (robot-api 6.7).
-pub fn set_cdt(mem_id: u32) -> u32 {
+pub fn set_cdt(mem_id: MemId) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
     match rt.shm.base(mem_id) {
         Some((p, n)) => {
@@ -327,7 +332,7 @@ pub unsafe fn volume_switch(set: i32, value: *mut u8) -> u32 {
     O_SUCCESS
 }
 
-pub fn vr_attach(service: i32, selector: u32) -> u32 {
+pub fn vr_attach(service: i32, selector: Selector) -> u32 {
     let (Some(rt), Some(me)) = (Runtime::get(), crate::object::current()) else { return O_FAIL };
     if rt.vr.attach(service as usize, me.oid, selector) {
         O_SUCCESS
@@ -336,7 +341,7 @@ pub fn vr_attach(service: i32, selector: u32) -> u32 {
     }
 }
 
-pub unsafe fn vr_submit(service: i32, oid: *mut c_void, selector: u32, base: *mut c_void, size: usize, token: *mut u64) -> u32 {
+pub unsafe fn vr_submit(service: i32, oid: *mut c_void, selector: Selector, base: *mut c_void, size: usize, token: *mut u64) -> u32 {
     let Some(rt) = Runtime::get() else { return O_FAIL };
     if base.is_null() || token.is_null() {
         return O_INVALID_ARG;

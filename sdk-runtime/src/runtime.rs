@@ -20,6 +20,7 @@ use crate::ms::MsDir;
 use crate::object::{Envelope, ObjectSlot, Spun};
 use crate::power::Power;
 use crate::shm::ShmTable;
+use openr_sys::{DesignDataId, MemId, Selector};
 
 /// OID of the first user object; the rest follow in OBJECT.CFG order.
 pub const FIRST_OID: usize = 0x8000_0040;
@@ -31,7 +32,7 @@ pub const FIRST_SYSTEM_OID: usize = 0x8000_0010;
 pub struct Service {
     pub name: String,
     pub oid: usize,
-    pub selector: u32,
+    pub selector: Selector,
 }
 
 /// Where the runtime's messages go. The CLI passes its shell's (cargo's layout and
@@ -111,14 +112,14 @@ pub struct Runtime {
     pub objects: RwLock<Vec<Arc<ObjectSlot>>>,
     pub registry: Mutex<Vec<Service>>,
     pub shm: ShmTable,
-    pub design_data: Mutex<Vec<u32>>,
+    pub design_data: Mutex<Vec<(DesignDataId, MemId)>>,
     pub clock: Clock,
     pub power: Power,
     pub diag: Diag,
     pub timers: crate::timers::Timers,
     pub vr: crate::vr::VrService,
     /// Data vectors handed out by `new_vector` (freed by `delete_vector`).
-    pub vectors: Mutex<Vec<u32>>,
+    pub vectors: Mutex<Vec<MemId>>,
     pub shutdown_requested: AtomicBool,
     /// The OFatal of an `OPENR::Fatal` call (`NO_FATAL`: none).
     pub fatal: std::sync::atomic::AtomicU32,
@@ -228,7 +229,7 @@ impl Runtime {
     }
 
     /// Queues a message (asynchronous `Send`).
-    pub fn send(&self, dest: usize, selector: u32, data: Vec<u8>) -> Result<(), CallError> {
+    pub fn send(&self, dest: usize, selector: Selector, data: Vec<u8>) -> Result<(), CallError> {
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
         enqueue(&self.sched, &slot, Envelope { selector, data, reply: None, caller: None })?;
         self.links.count(crate::object::current_oid, dest, selector);
@@ -243,13 +244,13 @@ impl Runtime {
     }
 
     /// Sends and waits for the answer (`Call`), at most `timeout` if given.
-    pub fn call(&self, dest: usize, selector: u32, data: Vec<u8>, timeout: Option<Duration>) -> Result<Vec<u8>, CallError> {
+    pub fn call(&self, dest: usize, selector: Selector, data: Vec<u8>, timeout: Option<Duration>) -> Result<Vec<u8>, CallError> {
         self.call_with(dest, selector, data, timeout, || {})
     }
 
     /// Queues a call from outside the objects (the boot sequence) and returns where its
     /// answer will arrive.
-    pub fn call_start(&self, dest: usize, selector: u32, data: Vec<u8>) -> Result<mpsc::Receiver<Vec<u8>>, CallError> {
+    pub fn call_start(&self, dest: usize, selector: Selector, data: Vec<u8>) -> Result<mpsc::Receiver<Vec<u8>>, CallError> {
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
         let (tx, rx) = mpsc::sync_channel(1);
         enqueue(&self.sched, &slot, Envelope { selector, data, reply: Some(tx), caller: None })?;
@@ -258,7 +259,7 @@ impl Runtime {
 
     /// `call`, running `queued` once the message is queued (the boot sequence gives the
     /// turn back there).
-    pub fn call_with(&self, dest: usize, selector: u32, data: Vec<u8>, timeout: Option<Duration>, queued: impl FnOnce()) -> Result<Vec<u8>, CallError> {
+    pub fn call_with(&self, dest: usize, selector: Selector, data: Vec<u8>, timeout: Option<Duration>, queued: impl FnOnce()) -> Result<Vec<u8>, CallError> {
         let me = crate::object::current();
         if me.as_ref().is_some_and(|me| me.oid == dest) {
             return Err(CallError::SelfCall);
@@ -284,7 +285,7 @@ impl Runtime {
         answer
     }
 
-    pub fn register(&self, name: &str, oid: usize, selector: u32) -> bool {
+    pub fn register(&self, name: &str, oid: usize, selector: Selector) -> bool {
         let mut reg = self.registry.lock().unwrap_or_else(|p| p.into_inner());
         if reg.iter().any(|s| s.name == name) {
             return false;

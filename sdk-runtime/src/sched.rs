@@ -22,6 +22,8 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Condvar, Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
+use openr_sys::Selector;
+
 /// Messages delivered after which the next frame starts even though objects are still
 /// busy. The ERS-7's CPU handles roughly 1000 inter-object messages in one 8 ms frame (an
 /// estimate: Aperios needs some microseconds per message); a program doing more work
@@ -48,7 +50,7 @@ struct State {
     holder: Option<Holder>,
     held_since: Option<Instant>,
     /// (object index, selector) of the message being run by the holder.
-    running: Option<(usize, u32)>,
+    running: Option<(usize, Selector)>,
     /// Objects that get the turn back before any new message: answered callers and
     /// woken sleepers.
     resume: VecDeque<usize>,
@@ -66,10 +68,10 @@ struct State {
     /// The frame thread, at the end of virtual time, left its turn to the shutdown.
     handed_over: bool,
     /// Objects reported stuck, for the caller to warn about once: (index, selector).
-    stuck: Vec<(usize, u32)>,
+    stuck: Vec<(usize, Selector)>,
     /// What each object past [`BUSY_SLOTS`] is running now (at every speed): index →
     /// selector (the others are in `Sched::busy`).
-    busy: BTreeMap<usize, u32>,
+    busy: BTreeMap<usize, Selector>,
     /// Threads parked on the condition variable: a change wakes them only when there
     /// are any (a futex wake is a system call even with nobody waiting).
     parked: usize,
@@ -100,7 +102,7 @@ impl State {
 /// Objects whose running selector is kept outside the lock (`Sched::busy`).
 const BUSY_SLOTS: usize = 256;
 /// `Sched::busy`: not running a message.
-const IDLE: u32 = u32::MAX;
+const IDLE: Selector = Selector::UNDEF;
 
 thread_local! {
     /// The message this thread runs began on the fast path (no ticket, no turn).
@@ -127,7 +129,7 @@ impl Default for Sched {
     fn default() -> Sched {
         Sched {
             state: Mutex::default(),
-            busy: (0..BUSY_SLOTS).map(|_| std::sync::atomic::AtomicU32::new(IDLE)).collect(),
+            busy: (0..BUSY_SLOTS).map(|_| std::sync::atomic::AtomicU32::new(IDLE.0)).collect(),
             tickets: std::sync::atomic::AtomicUsize::new(0),
             cv: Condvar::new(),
             changes: AtomicU64::new(0),
@@ -185,7 +187,7 @@ impl Sched {
                 s.give_back();
                 self.changed_locked(s);
             } else if t.elapsed() >= limit {
-                let sel = s.running.map_or(u32::MAX, |r| r.1);
+                let sel = s.running.map_or(Selector::UNDEF, |r| r.1);
                 s.detached.insert(i);
                 s.stuck.push((i, sel));
                 s.give_back();
@@ -209,23 +211,23 @@ impl Sched {
     }
 
     /// The selector of the message object `index` is running (or waiting to run), if any.
-    pub fn running(&self, index: usize) -> Option<u32> {
+    pub fn running(&self, index: usize) -> Option<Selector> {
         match self.busy.get(index) {
-            Some(b) => Some(b.load(Ordering::Acquire)).filter(|&sel| sel != IDLE),
+            Some(b) => Some(Selector(b.load(Ordering::Acquire))).filter(|&sel| sel != IDLE),
             None => self.lock().busy.get(&index).copied(),
         }
     }
 
-    fn set_busy(&self, s: &mut State, index: usize, selector: Option<u32>) {
+    fn set_busy(&self, s: &mut State, index: usize, selector: Option<Selector>) {
         match (self.busy.get(index), selector) {
-            (Some(b), sel) => b.store(sel.unwrap_or(IDLE), Ordering::Release),
+            (Some(b), sel) => b.store(sel.unwrap_or(IDLE).0, Ordering::Release),
             (None, Some(sel)) => drop(s.busy.insert(index, sel)),
             (None, None) => drop(s.busy.remove(&index)),
         }
     }
 
     /// Objects that outran the watchdog since the last call: (index, selector).
-    pub fn take_stuck(&self) -> Vec<(usize, u32)> {
+    pub fn take_stuck(&self) -> Vec<(usize, Selector)> {
         std::mem::take(&mut self.lock().stuck)
     }
 
@@ -252,17 +254,17 @@ impl Sched {
     /// A message begins without the lock when nothing is serialised and no ticket is
     /// left from a serialised spell: it would run at once anyway, and nobody waits for
     /// it to begin or end.
-    fn fast(&self, index: usize, selector: u32) -> bool {
+    fn fast(&self, index: usize, selector: Selector) -> bool {
         let Some(b) = self.busy.get(index) else { return false };
         if self.serial() || self.tickets.load(Ordering::Acquire) != 0 {
             return false;
         }
-        b.store(selector, Ordering::Release);
+        b.store(selector.0, Ordering::Release);
         true
     }
 
     /// Object thread, before running a message it received: waits for its turn.
-    pub fn begin(&self, index: usize, selector: u32) {
+    pub fn begin(&self, index: usize, selector: Selector) {
         let fast = self.fast(index, selector);
         FAST.with(|f| f.set(fast));
         if fast {
@@ -307,7 +309,7 @@ impl Sched {
         // shutdown sequence polls `running`).
         if FAST.with(|f| f.replace(false)) {
             if let Some(b) = self.busy.get(index) {
-                b.store(IDLE, Ordering::Release);
+                b.store(IDLE.0, Ordering::Release);
             }
             return;
         }
@@ -495,7 +497,7 @@ mod tests {
                 let (sched, log) = (sched.clone(), log.clone());
                 std::thread::spawn(move || {
                     for _ in 0..if i == 2 { 2 } else { 1 } {
-                        sched.begin(i, 1);
+                        sched.begin(i, Selector(1));
                         log.lock().unwrap().push(i);
                         sched.end(i);
                     }
@@ -520,7 +522,7 @@ mod tests {
         let pingpong = std::thread::spawn(move || {
             for n in 0..2 * FRAME_WORK + 10 {
                 let me = (n % 2) as usize;
-                s2.begin(me, 4);
+                s2.begin(me, Selector(4));
                 assert!(s2.push(1 - me, || true));
                 s2.end(me);
             }
@@ -542,10 +544,10 @@ mod tests {
         sched.set_serial(true);
         sched.set_watchdog(Duration::from_millis(50));
         assert!(sched.push(3, || true));
-        sched.begin(3, 1);
+        sched.begin(3, Selector(1));
         // Object 3 never ends its message: the frame still gets its turn.
         assert!(sched.frame_turn(|| true).is_empty());
-        assert_eq!(sched.take_stuck(), [(3, 1)]);
+        assert_eq!(sched.take_stuck(), [(3, Selector(1))]);
         sched.release();
     }
 }

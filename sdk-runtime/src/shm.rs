@@ -4,6 +4,8 @@
 use std::collections::HashMap;
 use std::sync::Mutex;
 
+use openr_sys::MemId;
+
 struct Region {
     base: *mut u8,
     size: usize,
@@ -15,7 +17,7 @@ struct Region {
 unsafe impl Send for Region {}
 
 pub struct ShmTable {
-    inner: Mutex<(u32, HashMap<u32, Region>)>,
+    inner: Mutex<(u32, HashMap<MemId, Region>)>,
 }
 
 impl ShmTable {
@@ -24,7 +26,7 @@ impl ShmTable {
     }
 
     /// Allocates `size` zeroed bytes (16-byte aligned) with one reference.
-    pub fn alloc(&self, size: usize) -> Option<(u32, *mut u8)> {
+    pub fn alloc(&self, size: usize) -> Option<(MemId, *mut u8)> {
         // SAFETY: calloc with a non-zero size; null is checked below.
         let base = unsafe { libc::calloc(1, size.max(1)) }.cast::<u8>();
         if base.is_null() {
@@ -32,17 +34,17 @@ impl ShmTable {
         }
         let mut g = self.inner.lock().unwrap_or_else(|p| p.into_inner());
         g.0 = g.0.wrapping_add(1).max(1);
-        let id = g.0;
+        let id = MemId(g.0);
         g.1.insert(id, Region { base, size, refs: 1 });
         Some((id, base))
     }
 
-    pub fn base(&self, id: u32) -> Option<(*mut u8, usize)> {
+    pub fn base(&self, id: MemId) -> Option<(*mut u8, usize)> {
         let g = self.inner.lock().unwrap_or_else(|p| p.into_inner());
         g.1.get(&id).map(|r| (r.base, r.size))
     }
 
-    pub fn add_ref(&self, id: u32) {
+    pub fn add_ref(&self, id: MemId) {
         let mut g = self.inner.lock().unwrap_or_else(|p| p.into_inner());
         if let Some(r) = g.1.get_mut(&id) {
             r.refs += 1;
@@ -50,7 +52,7 @@ impl ShmTable {
     }
 
     /// Drops one reference; frees the memory with the last. Returns whether it was freed.
-    pub fn unref(&self, id: u32) -> bool {
+    pub fn unref(&self, id: MemId) -> bool {
         let mut g = self.inner.lock().unwrap_or_else(|p| p.into_inner());
         let Some(r) = g.1.get_mut(&id) else { return false };
         r.refs -= 1;

@@ -23,7 +23,7 @@ pub const SERVICE_SENSOR: usize = openr_sys::VR_SENSOR as usize;
 pub const SERVICE_IMAGE: usize = openr_sys::VR_IMAGE as usize;
 pub const SERVICE_SPEAKER: usize = openr_sys::VR_SPEAKER as usize;
 pub const SERVICE_MIC: usize = openr_sys::VR_MIC as usize;
-use openr_sys::{openr_vr_event as VrEvent, VR_CONNECTED as EVENT_CONNECTED, VR_DATA as EVENT_DATA, VR_DONE as EVENT_DONE};
+use openr_sys::{openr_vr_event as VrEvent, MemId, Selector, VR_CONNECTED as EVENT_CONNECTED, VR_DATA as EVENT_DATA, VR_DONE as EVENT_DONE};
 
 fn event_bytes(ev: &VrEvent) -> Vec<u8> {
     // SAFETY: a repr(C) struct of plain integers without padding (16 + 8 bytes).
@@ -33,9 +33,9 @@ fn event_bytes(ev: &VrEvent) -> Vec<u8> {
 #[derive(Default)]
 struct Wiring {
     /// Per service: the system object (oid, event selector) that provides it.
-    providers: [Option<(usize, u32)>; 5],
+    providers: [Option<(usize, Selector)>; 5],
     /// Subject (oid, selector) → the robot's connection id.
-    connections: HashMap<(usize, u32), u32>,
+    connections: HashMap<(usize, Selector), u32>,
     /// Playing vectors: token → (base address, size) of the region the object keeps.
     playing: HashMap<u64, (usize, usize)>,
 }
@@ -104,7 +104,7 @@ impl VrService {
         self.wiring.lock().unwrap_or_else(|p| p.into_inner())
     }
 
-    pub fn attach(&self, service: usize, oid: usize, selector: u32) -> bool {
+    pub fn attach(&self, service: usize, oid: usize, selector: Selector) -> bool {
         match self.wiring().providers.get_mut(service) {
             Some(slot) => {
                 *slot = Some((oid, selector));
@@ -121,13 +121,13 @@ impl VrService {
     pub fn connected(&self, rt: &Runtime, oid: usize, timeout: std::time::Duration) -> bool {
         let provider = self.wiring().providers.iter().flatten().find(|p| p.0 == oid).copied();
         let Some((oid, sel)) = provider else { return false };
-        let ev = VrEvent { kind: EVENT_CONNECTED, service: 0, token: 0, mem_id: 0, size: 0 };
+        let ev = VrEvent { kind: EVENT_CONNECTED, service: 0, token: 0, mem_id: MemId::default(), size: 0 };
         rt.sched.boot_turn();
         rt.call_with(oid, sel, event_bytes(&ev), Some(timeout), || rt.sched.release()).is_ok()
     }
 
     /// A command vector received by the effector from subject (oid, selector).
-    pub fn submit(&self, subject: (usize, u32), base: usize, size: usize) -> Result<u64, robot::VectorError> {
+    pub fn submit(&self, subject: (usize, Selector), base: usize, size: usize) -> Result<u64, robot::VectorError> {
         let conn = {
             let mut w = self.wiring();
             let next = w.connections.len() as u32 + 1;
@@ -164,7 +164,7 @@ impl VrService {
         for c in &out.completed {
             self.wiring().playing.remove(&c.token);
             if let Some((oid, sel)) = effector {
-                let ev = VrEvent { kind: EVENT_DONE, service: SERVICE_EFFECTOR as u32, token: c.token, mem_id: 0, size: 0 };
+                let ev = VrEvent { kind: EVENT_DONE, service: SERVICE_EFFECTOR as u32, token: c.token, mem_id: MemId::default(), size: 0 };
                 let _ = rt.send(oid, sel, event_bytes(&ev));
             }
         }
@@ -183,7 +183,7 @@ impl VrService {
         }
         if let Some((oid, sel)) = self.wiring().providers[SERVICE_SPEAKER] {
             for token in played.done {
-                let ev = VrEvent { kind: EVENT_DONE, service: SERVICE_SPEAKER as u32, token, mem_id: 0, size: 0 };
+                let ev = VrEvent { kind: EVENT_DONE, service: SERVICE_SPEAKER as u32, token, mem_id: MemId::default(), size: 0 };
                 let _ = rt.send(oid, sel, event_bytes(&ev));
             }
         }
@@ -232,7 +232,7 @@ impl VrService {
         // SAFETY: a fresh region of len bytes, ours until it is sent.
         let region = unsafe { std::slice::from_raw_parts_mut(base, len) };
         fill(region);
-        let _ = vectors::set_region_fields(region, mem_id, 0, len as u32);
+        let _ = vectors::set_region_fields(region, mem_id.0, 0, len as u32);
         let ev = VrEvent { kind: EVENT_DATA, service: service as u32, token: 0, mem_id, size: len as u32 };
         if rt.send(oid, sel, event_bytes(&ev)).is_err() {
             rt.shm.unref(mem_id);

@@ -4,7 +4,7 @@
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::sync::Mutex;
 
-use openr_ipstack::{Host, Report};
+use openr_ipstack::{Host, Report, Selector};
 
 pub struct Recorder {
     sent: Mutex<Sender<(usize, u32, Vec<u8>)>>,
@@ -39,8 +39,8 @@ impl Report for Recorder {
 }
 
 impl Host for Recorder {
-    fn send(&self, oid: usize, selector: u32, message: Vec<u8>) {
-        let _ = self.sent.lock().unwrap().send((oid, selector, message));
+    fn send(&self, oid: usize, selector: Selector, message: Vec<u8>) {
+        let _ = self.sent.lock().unwrap().send((oid, selector.0, message));
     }
     fn read_stick(&self, path: &str) -> Option<String> {
         self.stick.iter().find(|(p, _)| *p == path).map(|(_, t)| t.to_string())

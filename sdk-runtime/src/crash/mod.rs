@@ -13,6 +13,7 @@ use std::fmt::Write as _;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use crate::object::{ObjectSlot, CURRENT_SLOT, RUNNING};
+use openr_sys::Selector;
 
 mod exits;
 mod frames;
@@ -24,7 +25,7 @@ use out::{fault_kind, signal_name, CText, Out, BUFFER};
 const SIGNALS: [libc::c_int; 5] = [libc::SIGSEGV, libc::SIGBUS, libc::SIGFPE, libc::SIGILL, libc::SIGABRT];
 const ALT_STACK: usize = 256 * 1024;
 /// `RUNNING` selector of a thread an object started itself (pthread_create).
-pub const OWN_THREAD: u32 = u32::MAX - 1;
+pub const OWN_THREAD: Selector = Selector(u32::MAX - 1);
 
 static FP_TRAPS: AtomicBool = AtomicBool::new(true);
 /// `OPENR_CORE_DUMP=1`: after the report, die of the signal itself so the kernel writes a
@@ -216,7 +217,7 @@ fn header(out: &mut Out, sig: i32, kind: &str) {
     let _ = write!(out, "error: object `{}` ({}) crashed with {}: {kind} ", slot.name(), slot.bin, signal_name(sig));
     let entry = slot.module.get().and_then(|m| m.entry(selector)).and_then(|f| frames::place(f as usize));
     let _ = match (selector, entry) {
-        (u32::MAX, _) => writeln!(out, "outside any entry (loading or static constructors)"),
+        (Selector::UNDEF, _) => writeln!(out, "outside any entry (loading or static constructors)"),
         (OWN_THREAD, _) => writeln!(out, "in a thread the object started (pthread_create)"),
         (s, Some(p)) if !p.info.dli_sname.is_null() => writeln!(out, "in entry {} (selector {s})", CText(p.info.dli_sname)),
         (s, _) => writeln!(out, "in selector {s}"),

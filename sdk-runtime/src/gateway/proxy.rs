@@ -10,6 +10,7 @@ use std::time::Duration;
 use super::link::Link;
 use super::wire;
 use crate::robot::status::{O_FAIL, O_SUCCESS};
+use openr_sys::PrimitiveId;
 
 pub const OPEN_PRIMITIVE: u8 = 1;
 pub const CLOSE_PRIMITIVE: u8 = 2;
@@ -91,15 +92,15 @@ fn run(api: u8, args: &[u8], out: &mut Vec<u8>) -> Option<u32> {
     Some(match api {
         OPEN_PRIMITIVE => {
             let loc = std::ffi::CString::new(args).ok()?;
-            let mut id = 0u32;
+            let mut id = PrimitiveId::default();
             // SAFETY: a C string and a live out-param.
             let st = unsafe { r::open_primitive(loc.as_ptr(), &mut id) };
-            out.extend_from_slice(&id.to_le_bytes());
+            out.extend_from_slice(&id.0.to_le_bytes());
             st
         }
-        CLOSE_PRIMITIVE => r::close_primitive(a.u32().ok()?),
+        CLOSE_PRIMITIVE => r::close_primitive(PrimitiveId(a.u32().ok()?)),
         JOINT_GAIN => {
-            let (op, id) = (a.i32().ok()?, a.u32().ok()?);
+            let (op, id) = (a.i32().ok()?, PrimitiveId(a.u32().ok()?));
             let mut gains = [0u16; 6];
             for g in &mut gains {
                 *g = a.u16().ok()?;
@@ -111,7 +112,7 @@ fn run(api: u8, args: &[u8], out: &mut Vec<u8>) -> Option<u32> {
         }
         JOINT_VALUE | SENSOR_VALUE => {
             let mut v = [0u8; 16];
-            let id = a.u32().ok()?;
+            let id = PrimitiveId(a.u32().ok()?);
             // SAFETY: 16 live bytes, the size of OJointValue / OSensorValue.
             let st = unsafe {
                 if api == JOINT_VALUE {
