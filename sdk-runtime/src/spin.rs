@@ -5,8 +5,9 @@
 //! a sender then finds it awake and makes no system call at all.
 //!
 //! Spinning takes a core, so at most `cores − 1` threads of the process spin at once
-//! (none on one core), and each for at most the budget: with every slot taken, or
-//! past the budget, a waiter parks as before. A thread whose spins keep coming up
+//! (none on one core), and each for at most the budget; with every slot taken a waiter
+//! spins only the first few microseconds (the slot's holder is often the thread about
+//! to send to it), and past that, or past the budget, it parks. A thread whose spins keep coming up
 //! empty (an object that gets a message a frame, not a chain of them) spins only now
 //! and then, to notice when that changes. `OPENR_SPIN_US` sets the budget (0: never
 //! spin).
@@ -86,8 +87,17 @@ fn poll_with<T>(spinning: &'static AtomicUsize, c: &Config, mut poll: impl FnMut
     if c.budget.is_zero() {
         return None;
     }
-    let _slot = take_slot(spinning, c.slots)?;
     let start = Instant::now();
+    let Some(_slot) = take_slot(spinning, c.slots) else {
+        // Every slot taken — typically by the very thread this one answered, about to
+        // find its answer and send the next message (a notify/ready ping-pong): a
+        // short spin still catches that without a wake-up, and costs a busy machine at
+        // most `PURE_SPIN`.
+        if c.slots == 0 {
+            return None; // one core: whoever would answer cannot run meanwhile
+        }
+        return spin_for(start, PURE_SPIN.min(c.budget), &mut poll);
+    };
     loop {
         // The clock is read once per batch: it costs more than a poll.
         for _ in 0..16 {
@@ -104,6 +114,21 @@ fn poll_with<T>(spinning: &'static AtomicUsize, c: &Config, mut poll: impl FnMut
         // this very core (cores oversubscribed): let it run.
         if spent >= PURE_SPIN {
             std::thread::yield_now();
+        }
+    }
+}
+
+/// Polls without yielding until `limit` has passed since `start`.
+fn spin_for<T>(start: Instant, limit: Duration, poll: &mut impl FnMut() -> Option<T>) -> Option<T> {
+    loop {
+        for _ in 0..16 {
+            if let Some(v) = poll() {
+                return Some(v);
+            }
+            std::hint::spin_loop();
+        }
+        if start.elapsed() >= limit {
+            return None;
         }
     }
 }
