@@ -89,6 +89,7 @@ for with in no yes; do
   if [ $with = yes ]; then
     chromium --headless --disable-gpu --no-sandbox --no-first-run --user-data-dir="$work/profile" --remote-debugging-port=0 "http://$addr/" >/dev/null 2>&1 &
     browser=$!
+    sleep 2  # the camera's first picture (a 404 text before it)
     page=$(curl -s "http://$addr/" | wc -c)
     state=$(curl -s "http://$addr/state" | wc -c)
     picture=$(curl -s "http://$addr/camera.png" | wc -c)
