@@ -9,20 +9,32 @@ use std::collections::VecDeque;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Condvar, Mutex, MutexGuard};
 
+#[repr(align(64))]
+#[derive(Default)]
+struct Padded(AtomicUsize);
+
+impl std::ops::Deref for Padded {
+    type Target = AtomicUsize;
+    fn deref(&self) -> &AtomicUsize {
+        &self.0
+    }
+}
+
 pub struct Mailbox<T> {
     /// The messages, and whether the receiver is parked on `cv` (both under the lock, so
     /// a sender cannot miss a receiver about to park).
     inner: Mutex<(VecDeque<T>, bool)>,
     /// The receiver is gone (its object never loaded): sends fail.
     closed: std::sync::atomic::AtomicBool,
-    /// Messages queued: what a spinning receiver polls.
-    queued: AtomicUsize,
+    /// Messages queued: what a spinning receiver polls (a cache line of its own, so
+    /// the polling does not contend with senders taking the lock).
+    queued: Padded,
     cv: Condvar,
 }
 
 impl<T> Default for Mailbox<T> {
     fn default() -> Self {
-        Mailbox { inner: Mutex::new((VecDeque::new(), false)), closed: Default::default(), queued: AtomicUsize::new(0), cv: Condvar::new() }
+        Mailbox { inner: Mutex::new((VecDeque::new(), false)), closed: Default::default(), queued: Padded::default(), cv: Condvar::new() }
     }
 }
 
