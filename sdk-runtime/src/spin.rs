@@ -6,10 +6,10 @@
 //!
 //! Spinning takes a core, so at most `cores − 1` threads of the process spin at once
 //! (none on one core), and each for at most the budget; with every slot taken a waiter
-//! spins only the first few microseconds (the slot's holder is often the thread about
-//! to send to it), and past that, or past the budget, it parks. A thread whose spins keep coming up
-//! empty (an object that gets a message a frame, not a chain of them) spins only now
-//! and then, to notice when that changes. `OPENR_SPIN_US` sets the budget (0: never
+//! spins only its first few microseconds (the slot's holder is often the thread about
+//! to send to it), and past that, or past the budget, it parks. A thread whose spins
+//! keep coming up empty (an object that gets a message a frame, not a chain of them)
+//! spins only now and then, to notice when that changes. `OPENR_SPIN_US` sets the budget (0: never
 //! spin).
 use std::cell::Cell;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -161,6 +161,21 @@ mod tests {
         assert_eq!(poll_with(&MINE, &c, || None::<()>), None);
         assert!(start.elapsed() >= c.budget);
         assert_eq!(MINE.load(Ordering::Acquire), 0, "the slot is given back");
+        // Every slot taken: a value that comes within PURE_SPIN is still caught, and the
+        // wait ends soon after PURE_SPIN, not after the (here very long) budget.
+        let long = Config { budget: Duration::from_secs(10), slots: 1 };
+        let held = take_slot(&MINE, 1).expect("the one slot");
+        let mut n = 0;
+        let got = poll_with(&MINE, &long, || {
+            n += 1;
+            (n == 3).then_some(n)
+        });
+        assert_eq!(got, Some(3));
+        let start = Instant::now();
+        assert_eq!(poll_with(&MINE, &long, || None::<()>), None);
+        let waited = start.elapsed();
+        assert!(waited >= PURE_SPIN && waited < long.budget / 2, "{waited:?}");
+        drop(held);
         let never = Config { budget: Duration::ZERO, slots: 1 };
         assert_eq!(poll_with(&MINE, &never, || Some(1)), None, "a zero budget never spins");
     }
