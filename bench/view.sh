@@ -46,7 +46,7 @@ run() {
   for _ in $(seq 200); do [ -S "$sock" ] && break; sleep 0.05; done
   if [ "$mode" = browser ]; then
     local addr; addr=$(addr_of "$err")
-    chromium --headless --disable-gpu --no-sandbox --no-first-run --user-data-dir="$work/profile" --remote-debugging-port=0 "http://$addr/" >/dev/null 2>&1 &
+    chromium --headless --disable-gpu --no-sandbox --no-first-run --disable-background-networking --disable-component-update --disable-sync --disable-quic --user-data-dir="$work/profile" --remote-debugging-port=0 "http://$addr/" >/dev/null 2>&1 &
     browser=$!
   fi
   sleep 3
@@ -87,7 +87,7 @@ for with in no yes; do
   addr=$(addr_of "$work/err.txt")
   browser=
   if [ $with = yes ]; then
-    chromium --headless --disable-gpu --no-sandbox --no-first-run --user-data-dir="$work/profile" --remote-debugging-port=0 "http://$addr/" >/dev/null 2>&1 &
+    chromium --headless --disable-gpu --no-sandbox --no-first-run --disable-background-networking --disable-component-update --disable-sync --disable-quic --user-data-dir="$work/profile" --remote-debugging-port=0 "http://$addr/" >/dev/null 2>&1 &
     browser=$!
     sleep 2  # the camera's first picture (a 404 text before it)
     page=$(curl -s "http://$addr/" | wc -c)
