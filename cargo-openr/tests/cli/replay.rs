@@ -227,7 +227,19 @@ fn a_trace_alone_replays_without_camera() {
 
 /// `cargo openr view PATH` fails with a message containing every one of `want`.
 pub(crate) fn fails_with(path: &Path, want: &[&str]) {
-    let out = Command::new(exe()).arg("view").arg(path).output().unwrap();
+    // A recording wrongly accepted would be served until killed: bound the wait, so the
+    // test fails instead of hanging (a refusal comes at once).
+    let mut child = Command::new(exe()).arg("view").arg(path).stdout(std::process::Stdio::piped()).stderr(std::process::Stdio::piped()).spawn().unwrap();
+    let start = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > std::time::Duration::from_secs(60) {
+            let _ = child.kill();
+            let out = child.wait_with_output().unwrap();
+            panic!("{}: still serving after 60 s (accepted?): {}", path.display(), String::from_utf8_lossy(&out.stderr));
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    let out = child.wait_with_output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{}: {err}", path.display());
     for w in want {
