@@ -102,3 +102,32 @@ fn an_object_refuses_a_host_table_smaller_than_its_own() {
     assert!(err.contains("error: this object was built for host ABI 1") && err.contains("rebuild it with the runtime's SDK root"), "{err}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// The network libraries (antMCOOP's `openr_net`, ERA201D1's own lookup) refuse a
+/// runtime net table of another ABI version or smaller than their own
+/// (`openr_net_accept` in openr_net.h, which both call).
+#[test]
+fn the_net_libraries_refuse_a_net_table_smaller_than_their_own() {
+    let dir = tempfile_dir("small-net-table");
+    let main = dir.join("main.cc");
+    std::fs::write(
+        &main,
+        "#include <cstdio>\n#include <cstdlib>\n#include \"openr_net.h\"\n\
+         int main(int argc, char** argv) {\n\
+           struct openr_net_api t = openr_net_api();\n\
+           t.abi_version = argc > 2 ? OPENR_NET_ABI_VERSION + 1 : OPENR_NET_ABI_VERSION;\n\
+           t.size = argc > 1 ? std::atoi(argv[1]) : sizeof(struct openr_net_api);\n\
+           std::printf(\"%s %s\\n\", openr_net_accept(&t) == &t ? \"table\" : \"none\", openr_net_accept(0) ? \"?\" : \"null\");\n  return 0;\n}\n",
+    )
+    .unwrap();
+    let exe = dir.join("probe");
+    let out = Command::new("g++").arg("-I").arg(headers()).arg(&main).arg("-o").arg(&exe).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let run = |args: &[&str]| String::from_utf8_lossy(&Command::new(&exe).args(args).output().unwrap().stdout).into_owned();
+    let full = std::mem::size_of::<openr_sys::openr_net_api>();
+    assert_eq!(run(&[]), "table null\n", "its own table");
+    assert_eq!(run(&[&(full + 8).to_string()]), "table null\n", "a newer runtime's larger table");
+    assert_eq!(run(&[&(full - 8).to_string()]), "none null\n", "a table one entry short");
+    assert_eq!(run(&[&full.to_string(), "other-abi"]), "none null\n", "another ABI version");
+    let _ = std::fs::remove_dir_all(dir);
+}

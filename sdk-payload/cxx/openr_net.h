@@ -112,6 +112,15 @@ struct openr_net_api {
 /* Found with dlsym; NULL outside cargo-openr. */
 const struct openr_net_api* openr_net(void);
 
+/* `api` if it is a table this library can use (its ABI version, at least its size: a
+ * runtime older than the library has fewer entries), else NULL. Both network libraries
+ * (antMCOOP, ERA201D1) look the table up themselves and check it with this. */
+static inline const struct openr_net_api* openr_net_accept(const struct openr_net_api* api)
+{
+    if (api != 0 && (api->abi_version != OPENR_NET_ABI_VERSION || api->size < sizeof(struct openr_net_api))) return 0;
+    return api;
+}
+
 #ifdef __cplusplus
 }
 #endif

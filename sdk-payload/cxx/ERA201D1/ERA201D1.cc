@@ -15,8 +15,7 @@ const openr_net_api* era_net()
 {
     static const openr_net_api* api =
         static_cast<const openr_net_api*>(dlsym(RTLD_DEFAULT, "openr_runtime_net_v1"));
-    if (api != 0 && (api->abi_version != OPENR_NET_ABI_VERSION || api->size < sizeof(struct openr_net_api))) return 0;
-    return api;
+    return openr_net_accept(api);
 }
 
 bool config(const char* key, char* out, size_t cap)

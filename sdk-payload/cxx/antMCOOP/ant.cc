@@ -19,8 +19,7 @@ extern "C" const struct openr_net_api* openr_net(void)
 {
     static const struct openr_net_api* api =
         static_cast<const struct openr_net_api*>(dlsym(RTLD_DEFAULT, "openr_runtime_net_v1"));
-    if (api != 0 && (api->abi_version != OPENR_NET_ABI_VERSION || api->size < sizeof(struct openr_net_api))) return 0;
-    return api;
+    return openr_net_accept(api);
 }
 
 boolean antEnvMsg::myOIDValid = FALSE;
