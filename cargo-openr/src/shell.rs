@@ -101,7 +101,7 @@ struct RuntimeReport {
 }
 
 impl RuntimeReport {
-    fn line(&self, colour: &str, label: &str, msg: &str) {
+    fn labelled(&self, colour: &str, label: &str, msg: &str) {
         let label = if self.color { format!("{colour}{label}{RESET}") } else { label.to_string() };
         // One write per line: objects' threads report concurrently.
         let _ = std::io::stderr().write_all(format!("{label} {msg}\n").as_bytes());
@@ -110,13 +110,16 @@ impl RuntimeReport {
 
 impl sdk_runtime::runtime::Report for RuntimeReport {
     fn warn(&self, msg: &str) {
-        self.line(YELLOW, "warning:", msg);
+        self.labelled(YELLOW, "warning:", msg);
     }
     fn error(&self, msg: &str) {
-        self.line(RED, "error:", msg);
+        self.labelled(RED, "error:", msg);
     }
     fn note(&self, msg: &str) {
-        self.line(CYAN, &format!("{:>12}", "note:"), msg);
+        self.labelled(CYAN, &format!("{:>12}", "note:"), msg);
+    }
+    fn line(&self, text: &str) {
+        let _ = std::io::stderr().write_all(format!("{text}\n").as_bytes());
     }
 }
 

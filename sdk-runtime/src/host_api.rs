@@ -48,7 +48,7 @@ pub fn panicked(function: &str, payload: Box<dyn std::any::Any + Send>) {
             rt.diag.error(&msg);
             rt.internal_errors.fetch_add(1, Ordering::AcqRel);
         }
-        None => eprintln!("error: {msg}"),
+        None => crate::runtime::Report::error(&crate::runtime::PlainStderr, &msg),
     }
 }
 

@@ -8,7 +8,7 @@ use std::sync::{Arc, OnceLock};
 use openr_ipstack::{EncodeFn, Net, NetOptions, Request};
 use openr_sys::{EndpointId, Selector};
 
-use crate::runtime::Runtime;
+use crate::runtime::{Report, Runtime};
 
 /// A run's network settings and its IPStack.
 pub struct NetState {
@@ -63,12 +63,16 @@ impl openr_ipstack::Report for RuntimeHost {
         }
     }
     fn info(&self, line: &str) {
-        if !self.0.is_some_and(|rt| rt.diag.quiet) {
-            eprintln!("{line}");
+        match self.0 {
+            Some(rt) => rt.diag.line(line),
+            None => crate::runtime::PlainStderr.line(line),
         }
     }
     fn trace(&self, line: &str) {
-        eprintln!("{line}");
+        match self.0 {
+            Some(rt) => rt.diag.report.line(line),
+            None => crate::runtime::PlainStderr.line(line),
+        }
     }
 }
 

@@ -41,6 +41,8 @@ pub trait Report: Send + Sync {
     fn warn(&self, msg: &str);
     fn error(&self, msg: &str);
     fn note(&self, msg: &str);
+    /// A plain line of its own (the IPStack's port remaps and `OPENR_NET_TRACE` lines).
+    fn line(&self, text: &str);
 }
 
 /// `warning: …`, `error: …`, `       note: …` on stderr, no colour.
@@ -55,6 +57,9 @@ impl Report for PlainStderr {
     }
     fn note(&self, msg: &str) {
         eprintln!("{:>12} {msg}", "note:");
+    }
+    fn line(&self, text: &str) {
+        eprintln!("{text}");
     }
 }
 
@@ -101,6 +106,12 @@ impl Diag {
     pub fn info(&self, msg: &str) {
         if self.verbose {
             self.report.note(msg);
+        }
+    }
+    /// A plain line, unless `--quiet`.
+    pub fn line(&self, text: &str) {
+        if !self.quiet {
+            self.report.line(text);
         }
     }
 }
