@@ -20,12 +20,18 @@ impl std::ops::Deref for Padded {
     }
 }
 
-pub struct Mailbox<T> {
-    /// The messages, and whether the receiver is parked on `cv` (both under the lock, so
-    /// a sender cannot miss a receiver about to park).
-    inner: Mutex<(VecDeque<T>, bool)>,
+/// What the lock guards.
+struct Inner<T> {
+    queue: VecDeque<T>,
+    /// The receiver is parked on `cv` (under the lock, so a sender cannot miss a
+    /// receiver about to park).
+    parked: bool,
     /// The receiver is gone (its object never loaded): sends fail.
-    closed: std::sync::atomic::AtomicBool,
+    closed: bool,
+}
+
+pub struct Mailbox<T> {
+    inner: Mutex<Inner<T>>,
     /// Messages queued: what a spinning receiver polls (a cache line of its own, so
     /// the polling does not contend with senders taking the lock).
     queued: Padded,
@@ -34,24 +40,24 @@ pub struct Mailbox<T> {
 
 impl<T> Default for Mailbox<T> {
     fn default() -> Self {
-        Mailbox { inner: Mutex::new((VecDeque::new(), false)), closed: Default::default(), queued: Padded::default(), cv: Condvar::new() }
+        Mailbox { inner: Mutex::new(Inner { queue: VecDeque::new(), parked: false, closed: false }), queued: Padded::default(), cv: Condvar::new() }
     }
 }
 
 impl<T> Mailbox<T> {
-    fn lock(&self) -> MutexGuard<'_, (VecDeque<T>, bool)> {
+    fn lock(&self) -> MutexGuard<'_, Inner<T>> {
         self.inner.lock().unwrap_or_else(|p| p.into_inner())
     }
 
     /// Queues `v`; wakes the receiver if it is parked. `Err(v)` once closed.
     pub fn send(&self, v: T) -> Result<(), T> {
         let mut g = self.lock();
-        if self.closed.load(Ordering::Acquire) {
+        if g.closed {
             return Err(v);
         }
-        g.0.push_back(v);
-        self.queued.store(g.0.len(), Ordering::Release);
-        let parked = g.1;
+        g.queue.push_back(v);
+        self.queued.store(g.queue.len(), Ordering::Release);
+        let parked = g.parked;
         drop(g);
         if parked {
             self.cv.notify_one();
@@ -62,8 +68,8 @@ impl<T> Mailbox<T> {
     /// No receiver will come: later sends fail, queued messages are dropped.
     pub fn close(&self) {
         let mut g = self.lock();
-        self.closed.store(true, Ordering::Release);
-        g.0.clear();
+        g.closed = true;
+        g.queue.clear();
         self.queued.store(0, Ordering::Release);
     }
 
@@ -73,8 +79,8 @@ impl<T> Mailbox<T> {
             return None;
         }
         let mut g = self.lock();
-        let v = g.0.pop_front();
-        self.queued.store(g.0.len(), Ordering::Release);
+        let v = g.queue.pop_front();
+        self.queued.store(g.queue.len(), Ordering::Release);
         v
     }
 
@@ -85,23 +91,19 @@ impl<T> Mailbox<T> {
         }
         let mut g = self.lock();
         loop {
-            if let Some(v) = g.0.pop_front() {
-                self.queued.store(g.0.len(), Ordering::Release);
+            if let Some(v) = g.queue.pop_front() {
+                self.queued.store(g.queue.len(), Ordering::Release);
                 return v;
             }
-            g.1 = true;
+            g.parked = true;
             g = self.cv.wait(g).unwrap_or_else(|p| p.into_inner());
-            g.1 = false;
+            g.parked = false;
         }
     }
 
-    /// Messages waiting.
-    pub fn len(&self) -> usize {
-        self.queued.load(Ordering::Acquire)
-    }
-
+    /// No message waiting.
     pub fn is_empty(&self) -> bool {
-        self.len() == 0
+        self.queued.load(Ordering::Acquire) == 0
     }
 }
 
@@ -138,7 +140,7 @@ mod tests {
         };
         // Long after any spin budget: the receiver is parked when these arrive.
         for v in [7, 8, 9] {
-            while !mb.inner.lock().unwrap().1 {
+            while !mb.inner.lock().unwrap().parked {
                 std::thread::yield_now();
             }
             mb.send(v).unwrap();

@@ -83,21 +83,27 @@ fn plan((misses, skipped): (u32, u32)) -> (bool, (u32, u32)) {
     }
 }
 
-fn poll_with<T>(spinning: &'static AtomicUsize, c: &Config, mut poll: impl FnMut() -> Option<T>) -> Option<T> {
+fn poll_with<T>(spinning: &'static AtomicUsize, c: &Config, poll: impl FnMut() -> Option<T>) -> Option<T> {
     if c.budget.is_zero() {
         return None;
     }
-    let start = Instant::now();
     let Some(_slot) = take_slot(spinning, c.slots) else {
         // Every slot taken — typically by the very thread this one answered, about to
         // find its answer and send the next message (a notify/ready ping-pong): a
         // short spin still catches that without a wake-up, and costs a busy machine at
-        // most `PURE_SPIN`.
+        // most `PURE_SPIN` (a budget that short never reaches the yields).
         if c.slots == 0 {
             return None; // one core: whoever would answer cannot run meanwhile
         }
-        return spin_for(start, PURE_SPIN.min(c.budget), &mut poll);
+        return spin(PURE_SPIN.min(c.budget), poll);
     };
+    spin(c.budget, poll)
+}
+
+/// Polls until `poll` gives a value or `budget` has passed; past `PURE_SPIN` it also
+/// yields the core at each round.
+fn spin<T>(budget: Duration, mut poll: impl FnMut() -> Option<T>) -> Option<T> {
+    let start = Instant::now();
     loop {
         // The clock is read once per batch: it costs more than a poll.
         for _ in 0..16 {
@@ -107,28 +113,13 @@ fn poll_with<T>(spinning: &'static AtomicUsize, c: &Config, mut poll: impl FnMut
             std::hint::spin_loop();
         }
         let spent = start.elapsed();
-        if spent >= c.budget {
+        if spent >= budget {
             return None;
         }
         // Past the first microseconds the thread we wait for may be queued behind us on
         // this very core (cores oversubscribed): let it run.
         if spent >= PURE_SPIN {
             std::thread::yield_now();
-        }
-    }
-}
-
-/// Polls without yielding until `limit` has passed since `start`.
-fn spin_for<T>(start: Instant, limit: Duration, poll: &mut impl FnMut() -> Option<T>) -> Option<T> {
-    loop {
-        for _ in 0..16 {
-            if let Some(v) = poll() {
-                return Some(v);
-            }
-            std::hint::spin_loop();
-        }
-        if start.elapsed() >= limit {
-            return None;
         }
     }
 }
