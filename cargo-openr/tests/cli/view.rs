@@ -85,12 +85,16 @@ pub(crate) fn cell(dom: &str, loc: &str, class: &str) -> String {
 }
 
 /// The value of attribute `attr` of the element with `id`.
-pub(crate) fn attr_of_id(dom: &str, id: &str, attr: &str) -> String {
+pub(crate) fn attr_of_id(dom: &str, id: &str, name: &str) -> String {
     let at = dom.find(&format!("id=\"{id}\"")).unwrap_or_else(|| panic!("no element {id}"));
     let tag_start = dom[..at].rfind('<').unwrap();
-    let tag = &dom[tag_start..tag_start + dom[tag_start..].find('>').unwrap()];
-    let from = tag.find(&format!("{attr}=\"")).unwrap_or_else(|| panic!("{id} has no {attr}")) + attr.len() + 2;
-    tag[from..].split('"').next().unwrap().to_string()
+    attr(&dom[tag_start..tag_start + dom[tag_start..].find('>').unwrap()], name).to_string()
+}
+
+/// The value of attribute `name` in the markup of one tag.
+pub(crate) fn attr<'a>(tag: &'a str, name: &str) -> &'a str {
+    let from = tag.find(&format!(" {name}=\"")).unwrap_or_else(|| panic!("no {name} in {tag}")) + name.len() + 3;
+    tag[from..].split('"').next().unwrap()
 }
 
 pub(crate) fn text_of_id(dom: &str, id: &str) -> String {

@@ -10,7 +10,7 @@ use serde_json::Value;
 
 use crate::replay::{moments, sensor_at, spawn_view};
 use crate::support::{build, read_trace, run_ms, spawn_ms};
-use crate::view::{attr_of_id, chromium, control, http, pause_after, text_of_id, view_addr};
+use crate::view::{attr, attr_of_id, chromium, control, http, pause_after, text_of_id, view_addr};
 
 const LF: [&str; 3] = ["PRM:/r2/c1-Joint2:j1", "PRM:/r2/c1/c2-Joint2:j2", "PRM:/r2/c1/c2/c3-Joint2:j3"];
 const TAIL_PAN: &str = "PRM:/r6/c1-Joint2:j1";
@@ -68,11 +68,6 @@ fn tail_tip(rise: f64, pan: f64, tilt: f64) -> ((f64, f64), (f64, f64)) {
 fn svg<'a>(dom: &'a str, id: &str) -> &'a str {
     let at = dom.find(&format!("<svg id=\"{id}\"")).unwrap_or_else(|| panic!("no svg {id}"));
     &dom[at..at + dom[at..].find("</svg>").unwrap()]
-}
-
-fn attr<'a>(tag: &'a str, name: &str) -> &'a str {
-    let from = tag.find(&format!(" {name}=\"")).unwrap_or_else(|| panic!("no {name} in {tag}")) + name.len() + 3;
-    tag[from..].split('"').next().unwrap()
 }
 
 /// The light marks drawn for `loc` in `part`: their tags.
