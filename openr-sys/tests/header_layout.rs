@@ -72,14 +72,25 @@ fn tempfile_dir(test: &str) -> std::path::PathBuf {
     d
 }
 
+/// Builds `main.cc` (`source`, with `extra` g++ arguments after it) against the SDK's
+/// ABI headers in `dir`; the probe's path.
+fn probe(dir: &std::path::Path, source: &str, extra: &[&std::ffi::OsStr]) -> std::path::PathBuf {
+    let main = dir.join("main.cc");
+    std::fs::write(&main, source).unwrap();
+    let exe = dir.join("probe");
+    let out = Command::new("g++").arg("-I").arg(headers()).arg(&main).args(extra).arg("-o").arg(&exe).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    exe
+}
+
 /// `openr_host()` (mcoopstub/host.cc) refuses a runtime table smaller than the one the
 /// object was built with, and says why.
 #[test]
 fn an_object_refuses_a_host_table_smaller_than_its_own() {
     let dir = tempfile_dir("small-table");
-    let main = dir.join("main.cc");
-    std::fs::write(
-        &main,
+    let host_cc = headers().join("mcoopstub/host.cc");
+    let exe = probe(
+        &dir,
         "#include <cstdio>\n#include <cstring>\n#include \"openr_host.h\"\n\
          extern \"C\" struct openr_host_api openr_runtime_api_v1;\n\
          struct openr_host_api openr_runtime_api_v1;\n\
@@ -87,12 +98,8 @@ fn an_object_refuses_a_host_table_smaller_than_its_own() {
            openr_runtime_api_v1.abi_version = OPENR_HOST_ABI_VERSION;\n\
            openr_runtime_api_v1.size = argc > 1 ? sizeof(struct openr_host_api) - 8 : sizeof(struct openr_host_api);\n\
            std::printf(\"%s\\n\", openr_host() ? \"table\" : \"none\");\n  return 0;\n}\n",
-    )
-    .unwrap();
-    let exe = dir.join("probe");
-    let host_cc = headers().join("mcoopstub/host.cc");
-    let out = Command::new("g++").arg("-rdynamic").arg("-I").arg(headers()).arg(&main).arg(&host_cc).arg("-o").arg(&exe).arg("-ldl").output().unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        &["-rdynamic".as_ref(), host_cc.as_os_str(), "-ldl".as_ref()],
+    );
     let same = Command::new(&exe).output().unwrap();
     assert_eq!(String::from_utf8_lossy(&same.stdout), "table\n");
     assert!(same.stderr.is_empty());
@@ -109,20 +116,16 @@ fn an_object_refuses_a_host_table_smaller_than_its_own() {
 #[test]
 fn the_net_libraries_refuse_a_net_table_smaller_than_their_own() {
     let dir = tempfile_dir("small-net-table");
-    let main = dir.join("main.cc");
-    std::fs::write(
-        &main,
+    let exe = probe(
+        &dir,
         "#include <cstdio>\n#include <cstdlib>\n#include \"openr_net.h\"\n\
          int main(int argc, char** argv) {\n\
            struct openr_net_api t = openr_net_api();\n\
            t.abi_version = argc > 2 ? OPENR_NET_ABI_VERSION + 1 : OPENR_NET_ABI_VERSION;\n\
            t.size = argc > 1 ? std::atoi(argv[1]) : sizeof(struct openr_net_api);\n\
            std::printf(\"%s %s\\n\", openr_net_accept(&t) == &t ? \"table\" : \"none\", openr_net_accept(0) ? \"?\" : \"null\");\n  return 0;\n}\n",
-    )
-    .unwrap();
-    let exe = dir.join("probe");
-    let out = Command::new("g++").arg("-I").arg(headers()).arg(&main).arg("-o").arg(&exe).output().unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        &[],
+    );
     let run = |args: &[&str]| String::from_utf8_lossy(&Command::new(&exe).args(args).output().unwrap().stdout).into_owned();
     let full = std::mem::size_of::<openr_sys::openr_net_api>();
     assert_eq!(run(&[]), "table null\n", "its own table");
