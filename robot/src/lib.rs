@@ -692,7 +692,7 @@ impl VirtualRobot {
         let PendingFrame { tick, ef, mut events } = pending;
         let tracing = self.trace_enabled;
         // sensors of this frame
-        self.latest = self.synth.sample(&self.body, &self.scene, tick.frame);
+        self.synth.sample_into(&self.body, &self.scene, tick.frame, &mut self.latest);
         for (id, v) in &self.sensor_override {
             self.latest.insert(*id, *v);
         }

@@ -286,6 +286,8 @@ pub struct RobotModel {
     prims: Vec<Primitive>,
     /// Table indices in sensor-frame order.
     sensor_order: Vec<usize>,
+    /// Table index of each part's first primitive (`by_part` runs a dozen times a frame).
+    parts: rustc_hash::FxHashMap<Part, usize>,
 }
 
 type Row = (&'static str, PrimitiveKind, Part);
@@ -318,7 +320,11 @@ impl RobotModel {
                 sensor_order.push(idx);
             }
         }
-        RobotModel { design, prims, sensor_order }
+        let mut parts = rustc_hash::FxHashMap::default();
+        for (i, p) in prims.iter().enumerate() {
+            parts.entry(p.part).or_insert(i);
+        }
+        RobotModel { design, prims, sensor_order, parts }
     }
 
     pub fn design(&self) -> Design {
@@ -336,7 +342,7 @@ impl RobotModel {
     }
 
     pub fn by_part(&self, part: Part) -> Option<&Primitive> {
-        self.prims.iter().find(|p| p.part == part)
+        self.parts.get(&part).and_then(|&i| self.prims.get(i))
     }
 
     pub fn primitives(&self) -> &[Primitive] {

@@ -262,6 +262,14 @@ impl SensorSynth {
 
     /// Every non-joint sensor's value for frame number `frame`.
     pub fn sample(&mut self, body: &Body, scene: &Scene, frame: u32) -> HashMap<PrimitiveId, SensorValue> {
+        let mut out = HashMap::default();
+        self.sample_into(body, scene, frame, &mut out);
+        out
+    }
+
+    /// [`SensorSynth::sample`] into `out` (emptied first; its room is kept from frame to
+    /// frame).
+    pub fn sample_into(&mut self, body: &Body, scene: &Scene, frame: u32, out: &mut HashMap<PrimitiveId, SensorValue>) {
         let p = posture(body, scene);
         let acc = gravity(&p);
         let a = |part| body.angle(part).map_or(0.0, rad);
@@ -294,8 +302,7 @@ impl SensorSynth {
             }
         };
 
-        let mut out = HashMap::default();
-        out.reserve(24);
+        out.clear();
         for prim in body.model().primitives() {
             let PrimitiveKind::Sensor(kind) = prim.kind else { continue };
             let v = match (prim.part, kind) {
@@ -328,7 +335,6 @@ impl SensorSynth {
             };
             out.insert(prim.id, v);
         }
-        out
     }
 }
 

@@ -51,6 +51,9 @@ struct State {
     limit: Option<Duration>,
     /// The frame thread is parked in `wait_runnable` (no frame in progress).
     parked: bool,
+    /// Threads waiting on `tick`: a frame wakes them only when there are any (a futex
+    /// wake is a system call even with nobody waiting, and frames are the hot path).
+    waiters: usize,
 }
 
 pub struct Clock {
@@ -65,7 +68,7 @@ impl Clock {
     pub fn new(speed: Speed) -> Clock {
         let wall = SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs() as i64);
         Clock {
-            state: Mutex::new(State { now: Duration::ZERO, speed, paused: false, steps: 0, limit: None, parked: false }),
+            state: Mutex::new(State { now: Duration::ZERO, speed, paused: false, steps: 0, limit: None, parked: false, waiters: 0 }),
             tick: Condvar::new(),
             boot_wall: wall,
             calendar: Mutex::new((0, 0)),
@@ -146,7 +149,7 @@ impl Clock {
         while Self::blocked(&s) {
             s.parked = true;
             self.tick.notify_all();
-            s = self.tick.wait(s).unwrap_or_else(|p| p.into_inner());
+            s = self.wait(s);
         }
     }
 
@@ -176,18 +179,30 @@ impl Clock {
             if now >= deadline {
                 break;
             }
+            s.waiters += 1;
             s = self.tick.wait_timeout(s, deadline - now).unwrap_or_else(|p| p.into_inner()).0;
+            s.waiters -= 1;
         }
         s.now
+    }
+
+    /// Waits on `tick`, counted in `waiters`.
+    fn wait<'a>(&self, mut s: std::sync::MutexGuard<'a, State>) -> std::sync::MutexGuard<'a, State> {
+        s.waiters += 1;
+        s = self.tick.wait(s).unwrap_or_else(|p| p.into_inner());
+        s.waiters -= 1;
+        s
     }
 
     /// Frame thread: one frame has run.
     pub fn advance(&self) -> Duration {
         let mut s = self.lock();
         s.now += FRAME;
-        let now = s.now;
+        let (now, waiters) = (s.now, s.waiters);
         drop(s);
-        self.tick.notify_all();
+        if waiters > 0 {
+            self.tick.notify_all();
+        }
         now
     }
 
@@ -201,7 +216,7 @@ impl Clock {
     pub fn wait_until(&self, t: Duration) {
         let mut s = self.lock();
         while s.now < t {
-            s = self.tick.wait(s).unwrap_or_else(|p| p.into_inner());
+            s = self.wait(s);
         }
     }
 

@@ -51,18 +51,28 @@ impl<T> Mailbox<T> {
 
     /// Queues `v`; wakes the receiver if it is parked. `Err(v)` once closed.
     pub fn send(&self, v: T) -> Result<(), T> {
+        if self.post(v)? {
+            self.wake();
+        }
+        Ok(())
+    }
+
+    /// Queues `v` without waking the receiver: `Ok(true)` when it is parked, and then
+    /// [`Mailbox::wake`] must follow (later if the message cannot run yet anyway).
+    pub fn post(&self, v: T) -> Result<bool, T> {
         let mut g = self.lock();
         if g.closed {
             return Err(v);
         }
         g.queue.push_back(v);
         self.queued.store(g.queue.len(), Ordering::Release);
-        let parked = g.parked;
-        drop(g);
-        if parked {
-            self.cv.notify_one();
-        }
-        Ok(())
+        Ok(g.parked)
+    }
+
+    /// Wakes a receiver that `post` found parked (a spurious wake-up if it no longer
+    /// is: it looks at its queue and parks again).
+    pub fn wake(&self) {
+        self.cv.notify_one();
     }
 
     /// No receiver will come: later sends fail, queued messages are dropped.
@@ -146,6 +156,23 @@ mod tests {
             mb.send(v).unwrap();
         }
         assert_eq!(rx.join().unwrap(), [7, 8, 9]);
+    }
+
+    #[test]
+    fn a_post_says_the_receiver_is_parked_and_wake_wakes_it() {
+        let mb = Arc::new(Mailbox::<u32>::default());
+        assert_eq!(mb.post(1), Ok(false), "nobody parked yet");
+        assert_eq!(mb.recv(), 1);
+        let rx = {
+            let mb = mb.clone();
+            std::thread::spawn(move || mb.recv())
+        };
+        while !mb.inner.lock().unwrap().parked {
+            std::thread::yield_now();
+        }
+        assert_eq!(mb.post(5), Ok(true));
+        mb.wake();
+        assert_eq!(rx.join().unwrap(), 5);
     }
 
     #[test]

@@ -45,6 +45,12 @@ pub struct ObjectSlot {
     pub sleeping: AtomicBool,
 }
 
+impl crate::sched::Wake for ObjectSlot {
+    fn wake(&self) {
+        self.mailbox.wake();
+    }
+}
+
 impl ObjectSlot {
     /// The object's name: its ocf NAME, else the `.BIN` file name.
     pub fn name(&self) -> &str {

@@ -187,8 +187,8 @@ pub enum CallError {
     Timeout,
 }
 
-fn enqueue(sched: &crate::sched::Sched, slot: &ObjectSlot, env: Envelope) -> Result<(), CallError> {
-    if sched.push(slot.index, || slot.mailbox.send(env).is_ok()) {
+fn enqueue(sched: &crate::sched::Sched, slot: &Arc<ObjectSlot>, env: Envelope) -> Result<(), CallError> {
+    if sched.push(slot.index, slot, || slot.mailbox.post(env).ok()) {
         return Ok(());
     }
     Err(CallError::UnknownDestination)

@@ -19,7 +19,7 @@
 //! At other speeds nothing is serialised: messages get no ticket.
 use std::collections::{BTreeMap, BTreeSet, VecDeque};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-use std::sync::{Condvar, Mutex, MutexGuard};
+use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
 use openr_sys::Selector;
@@ -75,6 +75,9 @@ struct State {
     /// Threads parked on the condition variable: a change wakes them only when there
     /// are any (a futex wake is a system call even with nobody waiting).
     parked: usize,
+    /// Parked receivers of messages sent while the turn was held, by object index: they
+    /// are woken once the turn is given back (see [`Sched::push`]).
+    deferred: Vec<(usize, Arc<dyn Wake>)>,
 }
 
 impl State {
@@ -97,6 +100,11 @@ impl State {
         self.held_since = None;
         self.running = None;
     }
+}
+
+/// A parked receiver to wake (an object's mailbox).
+pub trait Wake: Send + Sync {
+    fn wake(&self);
 }
 
 /// Objects whose running selector is kept outside the lock (`Sched::busy`).
@@ -159,21 +167,34 @@ impl Sched {
         s
     }
 
-    /// After a change to the state: wakes the waiters.
-    fn changed(&self, s: MutexGuard<'_, State>) {
+    /// After a change to the state: wakes the waiters, and, when the turn is free, the
+    /// receivers whose wake-up waited for it (outside the lock: a woken thread's first
+    /// step is to take it).
+    fn changed(&self, mut s: MutexGuard<'_, State>) {
         self.changes.fetch_add(1, Ordering::AcqRel);
         let parked = s.parked > 0;
+        let deferred = Self::take_deferred(&mut s);
         drop(s);
         if parked {
             self.cv.notify_all();
         }
+        deferred.into_iter().for_each(|(_, w)| w.wake());
     }
 
     /// `changed` from inside a wait, keeping the lock.
-    fn changed_locked(&self, s: &State) {
+    fn changed_locked(&self, s: &mut State) {
         self.changes.fetch_add(1, Ordering::AcqRel);
         if s.parked > 0 {
             self.cv.notify_all();
+        }
+        Self::take_deferred(s).into_iter().for_each(|(_, w)| w.wake());
+    }
+
+    fn take_deferred(s: &mut State) -> Vec<(usize, Arc<dyn Wake>)> {
+        if s.holder.is_none() {
+            std::mem::take(&mut s.deferred)
+        } else {
+            Vec::new()
         }
     }
 
@@ -231,23 +252,37 @@ impl Sched {
         std::mem::take(&mut self.lock().stuck)
     }
 
-    /// Queues a ticket for object `index` if `send` (which queues the message) succeeds;
-    /// both under one lock, so tickets and messages are in the same order.
+    /// Queues a ticket for object `index` if `post` (which queues the message and says
+    /// whether `receiver` is parked) succeeds; both under one lock, so tickets and
+    /// messages are in the same order. A parked receiver is woken outside the lock (a
+    /// system call there would keep every other sender and receiver waiting for it).
     ///
-    /// Not serialised, a message gets no ticket and is sent outside the lock: waking
-    /// its receiver (a system call) would otherwise keep every other sender and
-    /// receiver waiting for the lock.
-    pub fn push(&self, index: usize, send: impl FnOnce() -> bool) -> bool {
+    /// While the turn is held, a message can run only after it is given back, so its
+    /// parked receiver is woken then: once, instead of once for the message and again
+    /// for the turn (the frame thread's sensor and completion events, a notify and its
+    /// ready). A receiver outside the turns (past the watchdog) is woken at once.
+    ///
+    /// Not serialised, a message gets no ticket and is posted outside the lock.
+    pub fn push<W: Wake + 'static>(&self, index: usize, receiver: &Arc<W>, post: impl FnOnce() -> Option<bool>) -> bool {
         if !self.serial() {
-            return send();
+            let Some(parked) = post() else { return false };
+            if parked {
+                receiver.wake();
+            }
+            return true;
         }
         let mut s = self.lock();
-        if !send() {
-            return false;
-        }
+        let Some(parked) = post() else { return false };
         s.queue.push_back(index);
         self.tickets.store(s.queue.len(), Ordering::Release);
+        let later = s.holder.is_some() && !s.detached.contains(&index);
+        if parked && later && !s.deferred.iter().any(|&(i, _)| i == index) {
+            s.deferred.push((index, receiver.clone()));
+        }
         self.changed(s);
+        if parked && !later {
+            receiver.wake();
+        }
         true
     }
 
@@ -483,13 +518,53 @@ mod tests {
     use super::*;
     use std::sync::Arc;
 
+    /// A receiver that counts its wake-ups.
+    #[derive(Default)]
+    struct Counted(std::sync::atomic::AtomicUsize);
+
+    impl Wake for Counted {
+        fn wake(&self) {
+            self.0.fetch_add(1, Ordering::SeqCst);
+        }
+    }
+
+    fn nobody() -> Arc<Counted> {
+        Arc::default()
+    }
+
+    #[test]
+    fn a_parked_receiver_is_woken_once_the_turn_is_free() {
+        let sched = Sched::default();
+        let rx = Arc::new(Counted::default());
+        let woken = || rx.0.load(Ordering::SeqCst);
+        // Not serialised, or serialised with the turn free: at once.
+        assert!(sched.push(1, &rx, || Some(true)));
+        assert_eq!(woken(), 1);
+        sched.set_serial(true);
+        assert!(sched.push(1, &rx, || Some(true)));
+        assert_eq!(woken(), 2);
+        // A receiver that is not parked needs no wake-up; a refused post queues nothing.
+        assert!(sched.push(1, &rx, || Some(false)));
+        assert!(!sched.push(1, &rx, || None));
+        assert_eq!((woken(), sched.tickets.load(Ordering::SeqCst)), (2, 2), "tickets only when serialised");
+        // The turn held: two messages, one wake-up, when the turn is given back.
+        let sched = Sched::default();
+        sched.set_serial(true);
+        sched.boot_turn();
+        assert!(sched.push(1, &rx, || Some(true)));
+        assert!(sched.push(1, &rx, || Some(true)));
+        assert_eq!(woken(), 2, "woken while it could not run");
+        sched.release();
+        assert_eq!(woken(), 3);
+    }
+
     #[test]
     fn objects_run_in_the_order_their_messages_were_sent() {
         let sched = Arc::new(Sched::default());
         sched.set_serial(true);
         sched.boot_turn();
         for i in [2, 0, 1, 2] {
-            assert!(sched.push(i, || true));
+            assert!(sched.push(i, &nobody(), || Some(false)));
         }
         let log = Arc::new(Mutex::new(Vec::new()));
         let threads: Vec<_> = (0..3)
@@ -518,12 +593,12 @@ mod tests {
         let sched = Arc::new(Sched::default());
         sched.set_serial(true);
         let s2 = sched.clone();
-        assert!(sched.push(0, || true));
+        assert!(sched.push(0, &nobody(), || Some(false)));
         let pingpong = std::thread::spawn(move || {
             for n in 0..2 * FRAME_WORK + 10 {
                 let me = (n % 2) as usize;
                 s2.begin(me, Selector(4));
-                assert!(s2.push(1 - me, || true));
+                assert!(s2.push(1 - me, &nobody(), || Some(false)));
                 s2.end(me);
             }
         });
@@ -543,7 +618,7 @@ mod tests {
         let sched = Sched::default();
         sched.set_serial(true);
         sched.set_watchdog(Duration::from_millis(50));
-        assert!(sched.push(3, || true));
+        assert!(sched.push(3, &nobody(), || Some(false)));
         sched.begin(3, Selector(1));
         // Object 3 never ends its message: the frame still gets its turn.
         assert!(sched.frame_turn(|| true).is_empty());

@@ -10,6 +10,7 @@ use std::time::Instant;
 use anyhow::{bail, Context, Result};
 
 mod camera;
+mod model;
 mod network;
 mod rp;
 pub mod stats;
@@ -218,6 +219,7 @@ fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, wante
     let programs = camera::Programs { camwatch: &b.camwatch, movehead: &b.movehead, camhead: &b.camhead, movelegs: &b.movelegs };
     if wanted(Group::Frames) {
         camera::frames(exe, root, &programs, tab, RAW_P50)?;
+        model::model(tab, "movelegs: host time per 8 ms frame at --speed max (start-up taken off)");
     }
     if wanted(Group::Camera) {
         camera::camera(exe, root, &programs, tab)?;
