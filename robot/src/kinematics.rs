@@ -117,7 +117,7 @@ struct Ear {
 #[derive(Clone, Debug)]
 pub struct Body {
     model: RobotModel,
-    joints: BTreeMap<PrimitiveId, JointState>,
+    joints: crate::id_map::IdMap<JointState>,
     ears: BTreeMap<PrimitiveId, Ear>,
     leds: BTreeMap<PrimitiveId, LedState>,
     face_mode: u16,
@@ -126,7 +126,7 @@ pub struct Body {
 
 impl Body {
     pub fn new(model: RobotModel) -> Body {
-        let mut joints = BTreeMap::new();
+        let mut joints = crate::id_map::IdMap::default();
         let mut ears = BTreeMap::new();
         let mut leds = BTreeMap::new();
         for p in model.primitives() {
@@ -189,7 +189,7 @@ impl Body {
     }
 
     pub fn joint_ids(&self) -> impl Iterator<Item = PrimitiveId> + '_ {
-        self.joints.keys().copied()
+        self.joints.keys()
     }
 
     /// `OJointValue` of a Joint2 primitive.

@@ -27,6 +27,7 @@
 pub mod camera;
 pub mod effector;
 pub mod frame_clock;
+mod id_map;
 pub mod image;
 pub mod kinematics;
 pub mod model;
@@ -696,14 +697,12 @@ impl VirtualRobot {
         for (id, v) in &self.sensor_override {
             self.latest.insert(*id, *v);
         }
-        let snapshot: Vec<FrameValue> = self
-            .model
-            .sensor_entries()
-            .map(|p| match self.body.joint_value(p.id) {
-                Some(j) => FrameValue::Joint(j),
-                None => FrameValue::Sensor(self.latest.get(&p.id).copied().unwrap_or_default()),
-            })
-            .collect();
+        // Sized up front: collected from a filtering iterator, it would grow five times.
+        let mut snapshot = Vec::with_capacity(self.model.sensor_count());
+        snapshot.extend(self.model.sensor_entries().map(|p| match self.body.joint_value(p.id) {
+            Some(j) => FrameValue::Joint(j),
+            None => FrameValue::Sensor(self.latest.get(&p.id).copied().unwrap_or_default()),
+        }));
         self.window.push(snapshot);
         if ef.optional.is_some() {
             self.window_optional = ef.optional.clone();
@@ -713,16 +712,12 @@ impl VirtualRobot {
             let start = self.window.len().saturating_sub(4);
             let frames = &self.window[start..];
             if frames.len() == 4 {
-                let entries: Vec<SensorEntry> = self
-                    .model
-                    .sensor_entries()
-                    .enumerate()
-                    .map(|(i, p)| SensorEntry {
-                        data_type: p.kind.sensor_data_type(),
-                        primitive: p.id,
-                        frames: [0, 1, 2, 3].map(|k| frames[k].get(i).copied().unwrap_or(FrameValue::Sensor(SensorValue::default()))),
-                    })
-                    .collect();
+                let mut entries = Vec::with_capacity(self.model.sensor_count());
+                entries.extend(self.model.sensor_entries().enumerate().map(|(i, p)| SensorEntry {
+                    data_type: p.kind.sensor_data_type(),
+                    primitive: p.id,
+                    frames: [0, 1, 2, 3].map(|k| frames[k].get(i).copied().unwrap_or(FrameValue::Sensor(SensorValue::default()))),
+                }));
                 let opt = self.window_optional.as_ref().map(|(o, b)| (*o, b.as_slice()));
                 sensor_vector = vectors::build_sensor_vector(first, &entries, opt).ok();
                 if tracing {
