@@ -75,6 +75,8 @@ struct State {
     /// Threads parked on the condition variable: a change wakes them only when there
     /// are any (a futex wake is a system call even with nobody waiting).
     parked: usize,
+    /// The frame thread is parked on `frame_cv`.
+    frame_parked: bool,
     /// Parked receivers of messages sent while the turn was held, by object index: they
     /// are woken once the turn is given back (see [`Sched::push`]).
     deferred: Vec<(usize, Arc<dyn Wake>)>,
@@ -126,6 +128,8 @@ pub struct Sched {
     /// serialised, lets a message begin and end without the lock.
     tickets: std::sync::atomic::AtomicUsize,
     cv: Condvar,
+    /// Where the frame thread parks in `frame_turn`.
+    frame_cv: Condvar,
     /// Bumped (under the lock) by every change a waiter may be waiting for: spinning
     /// waiters watch it instead of parking.
     changes: AtomicU64,
@@ -140,6 +144,7 @@ impl Default for Sched {
             busy: (0..BUSY_SLOTS).map(|_| std::sync::atomic::AtomicU32::new(IDLE.0)).collect(),
             tickets: std::sync::atomic::AtomicUsize::new(0),
             cv: Condvar::new(),
+            frame_cv: Condvar::new(),
             changes: AtomicU64::new(0),
             serial: AtomicBool::new(false),
             watchdog: Mutex::new(Duration::from_secs(5)),
@@ -154,17 +159,37 @@ impl Sched {
 
     /// Waits for a change: spins a little first (`spin`), then parks.
     fn wait<'a>(&'a self, s: MutexGuard<'a, State>) -> MutexGuard<'a, State> {
+        self.wait_as(s, false)
+    }
+
+    /// `wait`; the frame thread (`frame`) parks apart and is woken only by a change
+    /// that may let a frame start (see `frame_may_start`), not by every message.
+    fn wait_as<'a>(&'a self, s: MutexGuard<'a, State>, frame: bool) -> MutexGuard<'a, State> {
         let seen = self.changes.load(Ordering::Acquire);
         drop(s);
         let changed = crate::spin::poll(|| (self.changes.load(Ordering::Acquire) != seen).then_some(())).is_some();
         let mut s = self.lock();
         if !changed && self.changes.load(Ordering::Acquire) == seen {
-            s.parked += 1;
-            s = self.cv.wait_timeout(s, RECHECK).unwrap_or_else(|p| p.into_inner()).0;
-            s.parked -= 1;
+            if frame {
+                s.frame_parked = true;
+                s = self.frame_cv.wait_timeout(s, RECHECK).unwrap_or_else(|p| p.into_inner()).0;
+                s.frame_parked = false;
+            } else {
+                s.parked += 1;
+                s = self.cv.wait_timeout(s, RECHECK).unwrap_or_else(|p| p.into_inner()).0;
+                s.parked -= 1;
+            }
         }
         self.check_watchdog(&mut s);
         s
+    }
+
+    /// Whether the parked frame thread should look again: the turn is free and no
+    /// message waits, or the frame's share of messages is used up. (Whether the boot
+    /// allows frames is not the scheduler's to see: the frame thread looks at it at
+    /// least every `RECHECK`.)
+    fn frame_may_start(s: &State) -> bool {
+        s.frame_parked && s.free() && (s.delivered >= FRAME_WORK || s.head().is_none())
     }
 
     /// After a change to the state: wakes the waiters, and, when the turn is free, the
@@ -173,10 +198,14 @@ impl Sched {
     fn changed(&self, mut s: MutexGuard<'_, State>) {
         self.changes.fetch_add(1, Ordering::AcqRel);
         let parked = s.parked > 0;
+        let frame = Self::frame_may_start(&s);
         let deferred = Self::take_deferred(&mut s);
         drop(s);
         if parked {
             self.cv.notify_all();
+        }
+        if frame {
+            self.frame_cv.notify_one();
         }
         deferred.into_iter().for_each(|(_, w)| w.wake());
     }
@@ -186,6 +215,9 @@ impl Sched {
         self.changes.fetch_add(1, Ordering::AcqRel);
         if s.parked > 0 {
             self.cv.notify_all();
+        }
+        if Self::frame_may_start(s) {
+            self.frame_cv.notify_one();
         }
         Self::take_deferred(s).into_iter().for_each(|(_, w)| w.wake());
     }
@@ -460,7 +492,7 @@ impl Sched {
                     return busy;
                 }
             }
-            s = self.wait(s);
+            s = self.wait_as(s, true);
         }
     }
 
