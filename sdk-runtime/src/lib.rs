@@ -39,6 +39,7 @@ pub mod ms;
 pub mod net;
 pub mod object;
 pub mod observe;
+mod pace;
 pub mod peer;
 pub mod power;
 pub mod robot_api;

@@ -12,7 +12,6 @@ use std::collections::HashMap;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::sync::Mutex;
-use std::time::Instant;
 
 use crate::clock::{Speed, FRAME};
 use crate::robot::{self, vectors, VirtualRobot};
@@ -254,7 +253,7 @@ impl VrService {
 /// ever dropped. Due timers fire after each frame.
 pub fn run_frames(rt: &'static Runtime) -> ! {
     rt.vr.peers.wait_for_clock_owner(rt);
-    let mut next = Instant::now();
+    let mut pacer: Option<crate::pace::Pacer> = None;
     let mut late = 0u64;
     let mut late_reported = 0u64;
     let mut busy_reported = false;
@@ -281,21 +280,20 @@ pub fn run_frames(rt: &'static Runtime) -> ! {
             rt.clock.wait_runnable();
         }
         match rt.clock.speed() {
-            Speed::Max => next = Instant::now(),
+            Speed::Max => pacer = None,
             Speed::Factor(f) => {
                 let period = FRAME.div_f64(f);
-                next += period;
-                let now = Instant::now();
-                if next > now {
-                    std::thread::sleep(next - now);
-                } else if now - next > period {
+                let pacer = match &mut pacer {
+                    Some(p) if p.period() == period => p,
+                    _ => pacer.insert(crate::pace::Pacer::new(period)),
+                };
+                if pacer.wait() == crate::pace::Frame::Late {
                     late += 1;
                     rt.vr.late_frames.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                     if late >= late_reported * 2 + 1 {
                         rt.diag.warn(&format!("virtual robot: {late} frame(s) started late (the host could not keep up)"));
                         late_reported = late;
                     }
-                    next = now;
                 }
             }
         }
