@@ -337,6 +337,10 @@ fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path
     crate::runtime::spawn(thread_name, move || {
         object::set_current(worker.clone());
         crate::crash::arm_thread();
+        if rt.clock.speed() != crate::clock::Speed::Max {
+            // In real time an object's wake-up on its message is part of the robot's timing.
+            crate::pace::short_slice();
+        }
         match Module::load(&host, &image, index) {
             Ok(m) => {
                 let _ = worker.module.set(m);
