@@ -145,4 +145,23 @@ mod tests {
         assert_eq!(adapt(us(160), us(0)), us(150), "then comes down by a sixteenth per frame");
         assert_eq!(adapt(us(50), us(5000)), MAX_MARGIN, "never above the maximum");
     }
+
+    #[test]
+    fn a_thread_gets_the_short_slice_it_asks_for() {
+        let slice = std::thread::spawn(|| {
+            // SAFETY: reads this thread's nice value.
+            let nice = || unsafe { libc::getpriority(libc::PRIO_PROCESS, 0) };
+            let before = nice();
+            short_slice();
+            assert_eq!(nice(), before, "the thread keeps its nice value");
+            // Kernels with EEVDF list the slice; older ones have no such line (and no slices).
+            let sched = std::fs::read_to_string("/proc/thread-self/sched").unwrap_or_default();
+            sched.lines().find(|l| l.starts_with("se.slice")).and_then(|l| l.split(':').nth(1)?.trim().parse::<u64>().ok())
+        })
+        .join()
+        .unwrap();
+        if let Some(ns) = slice {
+            assert_eq!(ns, SHORT_SLICE_NS);
+        }
+    }
 }
