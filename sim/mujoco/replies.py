@@ -45,52 +45,69 @@ class Layout:
 
 
 class Group:
-    """Robots with the same counts of joints and sensors: one row each."""
+    """Robots with the same counts of joints and sensors: one row each. The output
+    records, their value columns and the index arrays are made once; a frame is a
+    dozen numpy calls whatever the number of robots."""
 
-    def __init__(self, robots, layouts):
+    def __init__(self, robots, layouts, kept):
         self.robots = robots  # robot indices, one per row
         self.layouts = layouts
+        m = len(robots)
         j, a, p, d = layouts[0].shape()
         self.a, self.p, self.d = a, p, d
         self.dtype = np.dtype([("nj", "<u2"), ("joints", READING, (j,)), ("ns", "<u2"), ("sensors", READING, (a + p + d,))])
-        self.out = np.zeros(len(robots), self.dtype)
-        self.out["nj"], self.out["ns"] = j, a + p + d
-        self.out["joints"]["id"] = [lay.joint_ids for lay in layouts]
-        self.out["sensors"]["id"] = [lay.accel_ids + lay.paw_ids + lay.psd_ids for lay in layouts]
+        self.out = out = np.zeros(m, self.dtype)
+        out["nj"], out["ns"] = j, a + p + d
+        out["joints"]["id"] = [lay.joint_ids for lay in layouts]
+        out["sensors"]["id"] = [lay.accel_ids + lay.paw_ids + lay.psd_ids for lay in layouts]
+        self.joints = out["joints"]["value"]  # views, looked up once
+        sensors = out["sensors"]["value"]
+        self.accel, self.paws, self.psds = sensors[:, :a], sensors[:, a:a + p], sensors[:, a + p:]
         stack = lambda name: np.array([getattr(lay, name) for lay in layouts])  # noqa: E731
-        self.joint_q, self.sensor_adr, self.axis, self.sign = stack("joint_q"), stack("sensor_adr"), stack("axis"), stack("sign")
+        self.joint_q, self.sensor_adr, self.sign = stack("joint_q"), stack("sensor_adr"), stack("sign")
+        # each reported axis as an index into the (m, 3) accelerations, flattened
+        self.axis = (stack("axis") + 3 * np.arange(m)[:, None]).astype(np.intp)
         self.accel_lo, self.accel_hi, self.psd_lo, self.psd_hi = stack("accel_lo"), stack("accel_hi"), stack("psd_lo"), stack("psd_hi")
-        self.noise = np.empty((len(robots), BLOCK, 3 + d))  # scaled: accel x y z, PSDs
-        self.used = np.full(len(robots), BLOCK)  # frames of noise used per row
+        # noise, scaled (accel x y z, PSDs): frame `at` of the block is noise[:, at]
+        self.noise, self.at = np.empty((m, BLOCK, 3 + d)), BLOCK
+        self._refill(kept)
 
-    def _noise(self):
-        rows = np.arange(len(self.robots))
-        for r in np.flatnonzero(self.used == BLOCK):
-            z = self.layouts[r].rng.standard_normal((BLOCK, 3 + self.d))
+    def _refill(self, kept=None):
+        """A new block for every row: a robot's rows not used yet (kept: robot -> rows,
+        from its former group) first, then new draws of its stream."""
+        for r, (k, lay) in enumerate(zip(self.robots, self.layouts)):
+            rest = kept.pop(k, None) if kept is not None else None
+            n = 0 if rest is None else len(rest)
+            if n:
+                self.noise[r, :n] = rest
+            z = lay.rng.standard_normal((BLOCK - n, 3 + self.d))
             # 0.0 + sigma * z: Generator.normal(0, sigma) computes exactly this
-            self.noise[r, :, :3] = 0.0 + ACCEL_SIGMA * z[:, :3]
-            self.noise[r, :, 3:] = 0.0 + PSD_SIGMA * z[:, 3:]
-            self.used[r] = 0
-        n = self.noise[rows, self.used]
-        self.used += 1
-        return n
+            self.noise[r, n:, :3] = 0.0 + ACCEL_SIGMA * z[:, :3]
+            self.noise[r, n:, 3:] = 0.0 + PSD_SIGMA * z[:, 3:]
+        self.at = 0
+
+    def unused(self):
+        """robot -> its noise rows not used yet."""
+        return {k: self.noise[r, self.at:].copy() for r, k in enumerate(self.robots)}
 
     def build(self, qpos, sensordata):
         """Every row's payload (bytes) from the current state."""
-        out, a, p = self.out, self.a, self.p
-        out["joints"]["value"] = np.rint(qpos[self.joint_q] * 1e6)
+        if self.at == BLOCK:
+            self._refill()
+        noise = self.noise[:, self.at]
+        self.at += 1
+        np.rint(qpos[self.joint_q] * 1e6, out=self.joints, casting="unsafe")
         values = sensordata[self.sensor_adr]
-        noise = self._noise()
-        sensors = out["sensors"]["value"]
-        if a:
-            acc = np.take_along_axis(values[:, :3] + noise[:, :3], self.axis, 1)
-            sensors[:, :a] = np.maximum(self.accel_lo, np.minimum(self.accel_hi, np.rint(self.sign * acc * 1e6)))
-        sensors[:, a:a + p] = values[:, 3:3 + p] > PAW_THRESHOLD_N
+        if self.a:
+            acc = (values[:, :3] + noise[:, :3]).take(self.axis)
+            self.accel[:] = np.maximum(self.accel_lo, np.minimum(self.accel_hi, np.rint(self.sign * acc * 1e6)))
+        if self.p:
+            self.paws[:] = values[:, 3:3 + self.p] > PAW_THRESHOLD_N
         if self.d:
-            dist = values[:, 3 + p:]
+            dist = values[:, 3 + self.p:]
             near = np.minimum(self.psd_hi, np.maximum(self.psd_lo, np.rint((dist + noise[:, 3:]) * 1e6)))
-            sensors[:, a + p:] = np.where(dist < 0, self.psd_hi, near)  # -1: nothing hit
-        raw, size = out.tobytes(), self.dtype.itemsize
+            self.psds[:] = np.where(dist < 0, self.psd_hi, near)  # -1: nothing hit
+        raw, size = self.out.tobytes(), self.dtype.itemsize
         return [raw[i * size:(i + 1) * size] for i in range(len(self.robots))]
 
 
@@ -104,7 +121,7 @@ class Replies:
     def __init__(self, layouts, qpos, sensordata):
         self.layouts, self.qpos, self.sensordata = layouts, qpos, sensordata  # MuJoCo's arrays, looked up once
         self.key, self.groups = None, []
-        self.kept = {}  # robot -> (noise block, frames used) while it is in no group
+        self.kept = {}  # robot -> its noise rows not used yet, while it is in no group
 
     def build(self, robots):
         """{robot: READINGS payload} for `robots` (indices) in the current state."""
@@ -117,15 +134,10 @@ class Replies:
         return out
 
     def _regroup(self, key):
-        for g in self.groups:  # the noise each robot has drawn goes on in its new row
-            for r, k in enumerate(g.robots):
-                self.kept[k] = (g.noise[r].copy(), g.used[r])
+        for g in self.groups:  # the noise each robot has drawn goes on in its new group
+            self.kept.update(g.unused())
         by_shape = {}
         for k in key:
             by_shape.setdefault(self.layouts[k].shape(), []).append(k)
-        self.groups = [Group(ks, [self.layouts[k] for k in ks]) for ks in by_shape.values()]
-        for g in self.groups:
-            for r, k in enumerate(g.robots):
-                if k in self.kept:
-                    g.noise[r], g.used[r] = self.kept.pop(k)
+        self.groups = [Group(ks, [self.layouts[k] for k in ks], self.kept) for ks in by_shape.values()]
         self.key = key
