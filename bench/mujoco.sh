@@ -102,6 +102,7 @@ one() {
 
 echo "== ${ROUNDS} round(s) of ${SECONDS_RUN} s of robot time, robots: ${SIZES}; peers: ${sides[*]}${BEFORE:+ (before = $BEFORE)}; $(nproc) cores; $(uptime | sed 's/.*load/load/')"
 : >"$work/results"
+: >"$work/load"
 for ((round = 1; round <= ROUNDS; round++)); do
   # before/after in turn, the order swapped every round
   order=("${sides[@]}")
@@ -112,9 +113,10 @@ for ((round = 1; round <= ROUNDS; round++)); do
     done
   done
   echo "   round $round done; $(uptime | sed 's/.*load/load/')"
+  cut -d, -f1 /proc/loadavg | cut -d' ' -f1 >>"$work/load"
 done
 
-python3 - "$work/results" "$SIZES" <<'EOF'
+python3 - "$work/results" "$SIZES" "$work/load" <<'EOF'
 import statistics, sys
 rows = [l.split() for l in open(sys.argv[1])]
 sizes = [int(n) for n in sys.argv[2].split()]
@@ -122,6 +124,7 @@ res = {}
 for side, n, mode, rtf, cpu in rows:
     res.setdefault((side, int(n), mode), []).append((float(rtf), float(cpu)))
 cores = __import__("os").cpu_count()
+load = statistics.mean(float(l) for l in open(sys.argv[3]))  # 1-minute load average after each round
 med = lambda side, n, mode, i=0: statistics.median(v[i] for v in res[(side, n, mode)])  # noqa: E731
 sides = [s for s in ("before", "after") if any(k[0] == s for k in res)]
 print("== x real time (min / median / max) and CPU-s per simulated second (median)")
@@ -154,12 +157,13 @@ for n, goal in ((1, 15), (8, 4)):
         continue
     mode = max(("plain", "pipeline"), key=lambda m: med("after", n, m))
     a, cpu, most = med("after", n, mode), med("after", n, mode, 1), limit(n, mode)
+    busy = f"the runs kept {cpu * a:.2f} of {cores} cores busy (load average {load:.1f} with whatever else runs here)"
     if a >= goal:
         why = ""
-    elif most < goal:
-        why = f": CPU-bound, {cpu:.3f} CPU-s per simulated s on {cores} cores allow at most {most:.1f} x"
+    elif most < 1.1 * goal:
+        why = f": CPU-bound, {cpu:.3f} CPU-s per simulated s allow at most {most:.1f} x on {cores} free cores; {busy}"
     else:
-        why = (f": not CPU-bound ({cpu:.3f} CPU-s per simulated s would allow {most:.1f} x on {cores} cores), "
-               "latency-bound: the lockstep's hand-offs between peer, runtime and camera threads")
+        why = (f": not CPU-bound ({cpu:.3f} CPU-s per simulated s would allow {most:.1f} x on {cores} free cores), "
+               f"latency-bound: the lockstep's hand-offs between peer, runtimes and camera threads; {busy}")
     print(f"{'PASS' if a >= goal else 'FAIL'} {n} robot(s) {a:.2f} x real time attached ({mode}; goal >= {goal}){why}")
 EOF
