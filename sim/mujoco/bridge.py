@@ -19,20 +19,19 @@ otherwise kp = kv = 0 (limp, back-drivable).
 
 Sensor noise (seeded, so a run is reproducible for a given --seed): ESTIMATES, the
 spec gives none -- accelerometer sigma 0.05 m/s^2 per axis (a MEMS part of the era at
-125 Hz), distance sensors sigma 1 mm. Joint angles are reported exactly.
+125 Hz), distance sensors sigma 1 mm. Joint angles are reported exactly. replies.py
+builds the READINGS (every robot at once, with numpy).
 """
 import math
 import struct
 
 import numpy as np
 
+from replies import Layout
 from robot_peer import FRAME_CAMERA_DUE, FRAME_CAMERA_NEXT
 from world import servo_gains
 
 GAIN_SCALE = 4.0  # estimated, see above
-PAW_THRESHOLD_N = 0.5  # estimated: a paw "switch" closes with 0.5 N of contact force
-ACCEL_SIGMA = 0.05  # m/s², estimated
-PSD_SIGMA = 0.001  # m, estimated
 EAR_UP = math.radians(15)  # ers7.xml E10
 EAR_KP, EAR_KV = 0.5, 0.005  # estimated: a quick snap within a frame or two
 # distance sensors (ers7-model 5.3): locator -> sensor name in ers7.xml; their ranges
@@ -67,7 +66,6 @@ JOINT = np.dtype([("id", "<u4"), ("target", "<i4"), ("measured", "<i4"), ("p", "
                   ("d", "<u2"), ("enabled", "u1"), ("reserved", "u1")])
 EAR = np.dtype([("id", "<u4"), ("state", "<u4")])
 LED_SIZE = 8
-READING = np.dtype([("id", "<u4"), ("value", "<i4")])
 COUNT = struct.Struct("<H")
 
 
@@ -91,13 +89,6 @@ class Frame:
             raise ValueError(f"malformed FRAME {frame} ({len(payload)} bytes)") from None
         self.frame, self.motor_power = frame, bool(power)
         self.camera_due, self.camera_next = bool(flags & FRAME_CAMERA_DUE), bool(flags & FRAME_CAMERA_NEXT)
-
-
-def readings_payload(ids, values):
-    """READINGS records (id u32, value i32) with their count."""
-    out = np.empty(len(ids), READING)
-    out["id"], out["value"] = ids, values
-    return COUNT.pack(len(ids)) + out.tobytes()
 
 
 class Bridge:
@@ -126,13 +117,12 @@ class Bridge:
         # readings: joint IDs and their qpos addresses, in a fixed order
         self.joint_ids = np.array(list(self.joints), np.uint32)
         self.joint_q = np.array([robot.act[n][1] for n in self.joints.values()], np.intp)
-        # sensors: IDs in READINGS order, their sensordata addresses (accel x y z first)
-        self.sensor_ids = [a[0] for a in self.accel] + [p[0] for p in self.paws] + [p[0] for p in self.psds]
+        # sensors' sensordata addresses (accel x y z first, then paws, PSDs)
         self.sensor_adr = np.array([robot.sensor["accel"] + k for k in range(3)]
                                    + [robot.sensor[name] for _, name in self.paws]
                                    + [robot.sensor[p[1]] for p in self.psds], np.intp)
         # MuJoCo arrays looked up once (each attribute access makes a new numpy view)
-        self.qpos, self.ctrl, self.sensordata = robot.d.qpos, robot.d.ctrl, robot.d.sensordata
+        self.ctrl = robot.d.ctrl
         self.layout = None  # (joint IDs of the frames, their rows we drive, actuators, tau/range)
         self.gains = None  # the last frame's raw gains and motor power, as applied
         self.started = False
@@ -175,17 +165,7 @@ class Bridge:
                 r.set_gain(num, EAR_KP if power else 0.0, EAR_KV if power else 0.0)
                 r.target(num, EAR_UP if state else 0.0)
 
-    def readings(self):
-        """The READINGS payload of the current state: joint angles, then sensors."""
-        angles = np.rint(self.qpos[self.joint_q] * 1e6)
-        values = self.sensordata[self.sensor_adr].tolist()  # accel x y z, paws, PSDs
-        acc = [v + n for v, n in zip(values, self.rng.normal(0.0, ACCEL_SIGMA, 3).tolist())]
-        sensors = [max(lo, min(hi, round(sign * acc[axis] * 1e6))) for _, axis, sign, lo, hi in self.accel]
-        at = 3
-        sensors += [int(v > PAW_THRESHOLD_N) for v in values[at:at + len(self.paws)]]
-        at += len(self.paws)
-        if self.psds:
-            noise = self.rng.normal(0.0, PSD_SIGMA, len(self.psds)).tolist()
-            for (_, _, lo, hi), dist, n in zip(self.psds, values[at:], noise):
-                sensors.append(hi if dist < 0 else min(hi, max(lo, round((dist + n) * 1e6))))  # -1: nothing hit
-        return readings_payload(self.joint_ids, angles) + readings_payload(self.sensor_ids, sensors)
+    def readings_layout(self):
+        """What its READINGS hold and where they come from (replies.py builds them):
+        joint angles, then accelerometer, paw switches, distance sensors."""
+        return Layout(self.joint_ids, self.joint_q, self.accel, self.paws, self.psds, self.sensor_adr, self.rng)

@@ -42,6 +42,11 @@ os.environ.setdefault("MUJOCO_GL", "egl")
 # and llvmpipe's own raster threads would only compete with them and the runtimes for
 # the cores (paired runs: 1 robot 16.8-17.2x -> 17.0-18.2x, 8 robots 2.2-2.9x -> 2.5-3.0x).
 os.environ.setdefault("LP_NUM_THREADS", "0")
+# numpy's BLAS would start a thread per core for the camera culling's small matrix
+# products and spin them between frames: the cores belong to the physics, the cameras
+# and the runtimes. Must be set before numpy is imported.
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
 
 import robot_peer as rp  # noqa: E402  (protocol codec: the reference client)
 
@@ -51,6 +56,8 @@ try:
     from bridge import GAIN_SCALE, Bridge, Frame, stand  # noqa: E402  (these import numpy and mujoco)
     from world import CAMERA_H, CAMERA_W, DEFAULT_SCENE, FRAME_S, RenderError, SceneError, World, wait  # noqa: E402
     from fieldcam import FieldCamera  # noqa: E402
+    from replies import Replies  # noqa: E402
+    from wire import BadHeader, Wire  # noqa: E402
 except (ImportError, RuntimeError) as e:  # RuntimeError: mujoco rejects MUJOCO_GL
     print(f"mujoco peer: error: {sys.executable} cannot import MuJoCo: {e}", file=sys.stderr)
     sys.exit(UNAVAILABLE)
@@ -77,7 +84,7 @@ class Link:
     """One runtime connection and the robot it drives."""
 
     def __init__(self, sock, index):
-        self.peer, self.index = rp.Peer(sock), index
+        self.peer, self.index = Wire(sock), index
         self.bridge = self.frame = None
         self.camera = False
         self.open = True
@@ -88,7 +95,7 @@ class Link:
             roles |= rp.ROLE_CAMERA
         name = f"sim/mujoco/peer.py robot {self.index}".encode()
         self.peer.send(rp.HELLO, 0, struct.pack("<IIH", roles, rp.FLAG_CLOCK, len(name)) + name)
-        kind, _, payload = self.peer.recv()
+        kind, _, payload = self.recv()
         if kind != rp.WELCOME:
             raise ProtocolError(f"robot {self.index}: expected WELCOME, got message type {kind}")
         w = rp.parse_welcome(payload)
@@ -106,7 +113,7 @@ class Link:
         """The runtime's next FRAME (parsed), or None once it has left."""
         while self.open:
             try:
-                kind, n, payload = self.peer.recv()
+                kind, n, payload = self.recv()
             except (EOFError, ConnectionResetError):
                 break
             if kind == rp.FRAME:
@@ -122,6 +129,12 @@ class Link:
                 raise ProtocolError(f"robot {self.index}: runtime error {code}: {r.str()}")
         self.close()
         return None
+
+    def recv(self):
+        try:
+            return self.peer.recv()
+        except BadHeader as e:
+            raise ProtocolError(f"robot {self.index}: {e}") from None
 
     def close(self):
         if self.open:
@@ -284,6 +297,7 @@ def serve(a, world, links, pushes, state, fieldcam=None):
     first frame, an older runtime) is exposed as its frame begins, alongside the step."""
     ahead, ahead_poses = [], {}  # pictures exposed for the next frame, their camera poses
     early = {}  # --pipeline: robot -> READINGS of the state the next frame begins with
+    replies = Replies({link.index: link.bridge.readings_layout() for link in links}, world.d.qpos, world.d.sensordata)
     while True:
         live = [(link, link.next_frame()) for link in links if link.open]
         live = [(link, f) for link, f in live if f is not None]
@@ -293,7 +307,7 @@ def serve(a, world, links, pushes, state, fieldcam=None):
             if not link.bridge.started:
                 link.bridge.start(f)
                 if a.pipeline:
-                    early[link.index] = link.bridge.readings()
+                    early.update(replies.build([link.index]))  # before the next robot's start pose
         due = {link.index for link, f in live if link.camera and f.camera_due}
         pictures, poses = ahead, ahead_poses
         late = {link.index: f.frame for link, f in live if link.index in due and link.index not in poses}
@@ -310,9 +324,9 @@ def serve(a, world, links, pushes, state, fieldcam=None):
         pushes.apply(world, t_ms / 1000.0)
         world.step()
         if a.pipeline:
-            early = {link.index: link.bridge.readings() for link, f in live}  # fixed order: seeded noise
+            early = replies.build([link.index for link, f in live])
         else:
-            now = {link.index: link.bridge.readings() for link, f in live}  # fixed order: seeded noise
+            now = replies.build([link.index for link, f in live])
             answer(live, due, pictures, lambda link: now[link.index])
         if state:
             state.write(state_line(world, live[0][1].frame, t_ms, poses) + "\n")

@@ -315,3 +315,58 @@ fn simulator_errors_are_clear_and_nothing_hangs() {
         assert!(!out.stderr.contains("Traceback"), "{}", out.stderr);
     }
 }
+
+/// The Python that `cargo openr run --sim mujoco` uses (ops/sim.rs python()).
+fn sim_python() -> std::path::PathBuf {
+    if let Some(p) = std::env::var_os("OPENR_PYTHON").filter(|p| !p.is_empty()) {
+        return p.into();
+    }
+    let venv = Path::new(&std::env::var_os("HOME").unwrap()).join(".cache/cargo-openr/mujoco-venv/bin/python");
+    if venv.exists() {
+        venv
+    } else {
+        "python3".into()
+    }
+}
+
+/// A runtime that answers the peer's HELLO with something that is not the protocol: the
+/// peer says what it expected and what came, and exits 2 (no traceback, no hang).
+#[test]
+fn a_bad_message_header_stops_the_peer_with_what_came() {
+    use std::io::{Read, Write};
+    use std::os::unix::net::UnixListener;
+    use std::time::{Duration, Instant};
+    let dir = tempfile::tempdir().unwrap();
+    let sock = dir.path().join("r.sock");
+    let listener = UnixListener::bind(&sock).unwrap();
+    listener.set_nonblocking(true).unwrap();
+    let mut peer = std::process::Command::new(sim_python())
+        .arg(crate::support::repo().join("sim/mujoco/peer.py"))
+        .args([sock.to_str().unwrap(), "--no-camera", "--quiet"])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let deadline = Instant::now() + Duration::from_secs(60);
+    let mut conn = loop {
+        match listener.accept() {
+            Ok((c, _)) => break c,
+            Err(_) if Instant::now() < deadline && peer.try_wait().unwrap().is_none() => std::thread::sleep(Duration::from_millis(20)),
+            Err(e) => panic!("the peer did not attach: {e}; {:?}", peer.wait_with_output()),
+        }
+    };
+    conn.set_nonblocking(false).unwrap();
+    conn.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    let mut head = [0u8; 16]; // the HELLO's header, then its payload
+    conn.read_exact(&mut head).unwrap();
+    assert_eq!(&head[..4], b"ORP1");
+    let mut hello = vec![0u8; u32::from_le_bytes(head[8..12].try_into().unwrap()) as usize];
+    conn.read_exact(&mut hello).unwrap();
+    conn.write_all(b"HTTP/1.1 200 OK\r\n\r\n").unwrap();
+    let out = peer.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    let want = "robot 0: bad message header: expected magic b'ORP1' version 1, got magic b'HTTP' version 12591 (bytes 48 54 54 50 2f 31";
+    assert!(err.contains(want), "expected `{want}` in:\n{err}");
+    assert!(!err.contains("Traceback"), "{err}");
+}
