@@ -243,21 +243,28 @@ impl Cuts {
     }
 
     /// Writes the row: the cut pixels cast one by one, each span between them filled
-    /// with the colour of its first pixel.
-    pub(super) fn paint(&self, row: &mut [u8], pixel: impl Fn(usize) -> [u8; 3]) {
+    /// with the colour of its first pixel. `piece(a, b, colour)` is told of every span
+    /// and pixel in order.
+    pub(super) fn paint(&self, row: &mut [u8], pixel: impl Fn(usize) -> [u8; 3], piece: &mut dyn FnMut(usize, usize, [u8; 3])) {
         let mut next = 0;
         for &(lo, hi) in &self.ranges {
             if lo > next {
-                fill(&mut row[3 * next..3 * lo], pixel(next));
+                let c = pixel(next);
+                fill(&mut row[3 * next..3 * lo], c);
+                piece(next, lo, c);
                 next = lo;
             }
             for u in next..hi {
-                row[3 * u..3 * u + 3].copy_from_slice(&pixel(u));
+                let c = pixel(u);
+                row[3 * u..3 * u + 3].copy_from_slice(&c);
+                piece(u, u + 1, c);
             }
             next = next.max(hi);
         }
         if next < self.width {
-            fill(&mut row[3 * next..3 * self.width], pixel(next));
+            let c = pixel(next);
+            fill(&mut row[3 * next..3 * self.width], c);
+            piece(next, self.width, c);
         }
     }
 }
