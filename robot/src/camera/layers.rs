@@ -45,6 +45,13 @@ fn six<T>(row: &mut [T], w: usize) -> [&mut [T]; 6] {
     std::array::from_fn(|_| parts.next().expect("a row of six bands"))
 }
 
+/// Columns `a..e` of six bands (written out: `each_mut().map` is not inlined).
+#[inline(always)]
+fn sub6<'a, T>(parts: &'a mut [&mut [T]; 6], a: usize, e: usize) -> [&'a mut [T]; 6] {
+    let [p0, p1, p2, p3, p4, p5] = parts;
+    [&mut p0[a..e], &mut p1[a..e], &mut p2[a..e], &mut p3[a..e], &mut p4[a..e], &mut p5[a..e]]
+}
+
 /// The two RGB pixels of `q` (6 bytes), read as two little-endian words.
 #[inline(always)]
 fn pixel_pair(q: &[u8]) -> [[i32; 3]; 2] {
@@ -84,8 +91,8 @@ fn synth_from_rgb(l: &LayerLayout, rgb: &[u8], dst: &mut [u8], runs: Option<&Fla
         let mut bands = six(row, w);
         segments(row_runs(runs, y), w, |a, b, flat| {
             let e = if flat { a + 1 } else { b };
-            let sums = sums.each_mut().map(|s| &mut s[a..e]);
-            h_blocks(&top[6 * a..6 * e], &bot[6 * a..6 * e], sums, bands.each_mut().map(|s| &mut s[a..e]));
+            let sums = sub6(&mut sums, a, e);
+            h_blocks(&top[6 * a..6 * e], &bot[6 * a..6 * e], sums, sub6(&mut bands, a, e));
             if flat {
                 bands_copy_first(&mut bands, a, b);
             }
@@ -141,7 +148,7 @@ fn synth_from_layer(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8]
         let mut bands = six(row, w);
         segments(row_runs(runs, y), w, |a, b, flat| {
             let e = if flat { a + 1 } else { b };
-            let [yll, cr, cb, lh, hl, hh] = bands.each_mut().map(|s| &mut s[a..e]);
+            let [yll, cr, cb, lh, hl, hh] = sub6(&mut bands, a, e);
             // Y LL, Cr and Cb: means of the source's Y, Cr and Cb over 2×2 blocks
             for (k, out) in [yll, cr, cb].into_iter().enumerate() {
                 let (t, u) = (&top[k * sw + 2 * a..k * sw + 2 * e], &bot[k * sw + 2 * a..k * sw + 2 * e]);
@@ -276,14 +283,6 @@ fn synthesize_avx2(
     synthesize_layers(layout, rgb, runs, lut, field_counter, buf)
 }
 
-/// Whether pixel u of row 2k of HPF layer `src` (data `s`) has the Y, Cr and Cb of
-/// pixel u of row 2k + 1.
-#[inline(always)]
-fn same<'a>(src: &LayerLayout, s: &'a [u8]) -> impl Fn(usize, usize) -> bool + 'a {
-    let (stride, w) = (src.row_stride(), src.width);
-    move |k, u| (0..3).all(|b| s[2 * k * stride + b * w + u] == s[(2 * k + 1) * stride + b * w + u])
-}
-
 #[inline(always)]
 fn synthesize_layers(
     layout: &ImageLayout,
@@ -309,14 +308,11 @@ fn synthesize_layers(
             synth_cdt(&lm, m, &lc, rest, lut, None)
         }
         Some((sensor, r)) => {
-            // A block is flat where the two rows' runs overlap in one colour: pixel u of
-            // the upper row equals pixel u of the lower one (Y, Cr, Cb for HPF layers).
-            let row = 2 * lh.width * 3;
-            sensor.halve(lh.height, r.min, &mut r.h, |k, u| rgb[2 * k * row + 3 * u..][..3] == rgb[(2 * k + 1) * row + 3 * u..][..3]);
+            sensor.halve(lh.height, r.min, &mut r.h);
             synth_from_rgb(&lh, rgb, h, Some(&r.h));
-            r.h.halve(lm.height, r.min, &mut r.m, same(&lh, h));
+            r.h.halve(lm.height, r.min, &mut r.m);
             synth_from_layer(&lh, h, &lm, m, Some(&r.m));
-            r.m.halve(ll.height, r.min, &mut r.l, same(&lm, m));
+            r.m.halve(ll.height, r.min, &mut r.l);
             synth_from_layer(&lm, m, &ll, l, Some(&r.l));
             synth_cdt(&lm, m, &lc, rest, lut, Some(&r.m))
         }

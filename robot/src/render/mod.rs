@@ -239,22 +239,22 @@ impl PinholeCamera {
         let caster = Caster::new(self, world, wall_mm);
         let edges = spans::Edges::new(&caster, self);
         let mut cuts = spans::Cuts::default();
-        let rows = rgb.chunks_exact_mut(w * 3).take(h).enumerate();
-        let mut paint_row = |v: usize, row: &mut [u8], piece: &mut dyn FnMut(usize, usize, [u8; 3])| {
+        let mut runs = runs.map(|(r, min_run)| {
+            r.clear(min_run);
+            r
+        });
+        for (v, row) in rgb.chunks_exact_mut(w * 3).take(h).enumerate() {
             let d0 = self.ray(0.5, v as f64 + 0.5);
             let ball_row = caster.ball_row(d0);
             cuts.find(&caster, &edges, v, d0, ball_row.is_some(), w);
-            cuts.paint(row, |u| caster.pixel(d0, ball_row, u), piece);
-        };
-        match runs {
-            Some((runs, min_run)) => {
-                runs.clear(min_run);
-                for (v, row) in rows {
-                    let mut r = runs::RowRuns::new(runs);
-                    paint_row(v, row, &mut |a, b, c| r.piece(a, b, c));
+            let pixel = |u| caster.pixel(d0, ball_row, u);
+            match runs.as_deref_mut() {
+                Some(r) => {
+                    let mut r = runs::RowRuns::new(r);
+                    cuts.paint(row, pixel, |a, b, c| r.piece(a, b, c));
                 }
+                None => cuts.paint(row, pixel, |_, _, _| {}),
             }
-            None => rows.for_each(|(v, row)| paint_row(v, row, &mut |_, _, _| {})),
         }
     }
 

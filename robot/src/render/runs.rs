@@ -1,13 +1,14 @@
 //! Runs of identical pixels along the rows of an image, and the runs they give in the
 //! next, half-size layer.
 //!
-//! Why it exists: the scene is mostly large flat areas (carpet, walls, room). A 2×2
-//! block of identical pixels gives one and the same layer pixel wherever it is, and a
-//! layer pixel depends on nothing but its block, so the layer synthesis
-//! ([`crate::camera::synthesize_runs`]) works out the first pixel of a long run with
-//! the per-pixel code and copies it along the run: the bytes are those of the per-pixel
-//! path by construction. The renderer knows its flat spans and records the runs as it
-//! paints ([`RowRuns`]); the runs of each layer follow from those of the two rows of the
+//! Why it exists: the scene is mostly large flat areas (carpet, walls, room). A layer
+//! pixel is a function of its 2×2 block alone, so where the two pixels of a block's
+//! upper row lie in one run and those of its lower row in another, every block along
+//! the two runs gives the same layer pixel: the layer synthesis
+//! ([`crate::camera::synthesize_runs`]) works out the first pixel of a long run with the
+//! per-pixel code and copies it along the run, the bytes of the per-pixel path by
+//! construction. The renderer knows its flat spans and records the runs as it paints
+//! ([`RowRuns`]); the runs of each layer follow from those of the two rows of the
 //! double-size image above it ([`FlatRuns::halve`]).
 
 /// Runs per row: row r's are `runs[rows[r]..rows[r + 1]]`, half-open column ranges,
@@ -75,22 +76,20 @@ impl FlatRuns {
         r
     }
 
-    /// The runs of the half-size image made of 2×2 blocks of this one: block column x
-    /// of block row k is in a run where pixels 2x and 2x + 1 of rows 2k and 2k + 1 lie
-    /// in runs of one colour. `same(k, u)` tells whether pixel u of row 2k is pixel u of
-    /// row 2k + 1 (called on the first column two runs share). Block runs shorter than
+    /// The runs of the half-size image made of 2×2 blocks of this one, each block's
+    /// pixel a function of its four pixels alone: the blocks whose two upper pixels lie
+    /// in one run of row 2k and whose two lower ones lie in one run of row 2k + 1 are
+    /// all alike (the two runs need not share a colour). Block runs shorter than
     /// `min_len` are left out. `out` gets `height` rows.
-    pub fn halve(&self, height: usize, min_len: usize, out: &mut FlatRuns, same: impl Fn(usize, usize) -> bool) {
+    pub fn halve(&self, height: usize, min_len: usize, out: &mut FlatRuns) {
         out.clear(min_len);
         for k in 0..height {
             let (a, b) = (self.row(2 * k), self.row(2 * k + 1));
             let (mut i, mut j) = (0, 0);
             while i < a.len() && j < b.len() {
                 let (s, e) = (a[i].0.max(b[j].0) as usize, a[i].1.min(b[j].1) as usize);
-                if s < e && same(k, s) {
-                    // the blocks whose two columns both lie in s..e
-                    out.push(s.div_ceil(2), e / 2);
-                }
+                // the blocks whose two columns both lie in s..e
+                out.push(s.div_ceil(2), e / 2);
                 if a[i].1 < b[j].1 {
                     i += 1;
                 } else {
@@ -177,18 +176,19 @@ mod tests {
 
     #[test]
     fn halving_keeps_whole_blocks_of_one_colour() {
-        // row 0: aaaaaaabbbbbbbbb; row 1: aaaaabbbbbbbbbbb (runs at odd columns)
-        let rows = ["aaaaaaabbbbbbbbb", "aaaaabbbbbbbbbbb", "cccccccccccccccc", "cccccccccccccccd"];
+        // runs ending at odd columns (rows 0 and 1); rows 2 and 3 of other colours
+        let rows = ["aaaaaaabbbbbbbbb", "aaaaabbbbbbbbbbb", "cccccccccccccccc", "eeeeeeeeeeeeeeed"];
         let px: Vec<u8> = rows.iter().flat_map(|r| r.bytes()).collect();
         let r = FlatRuns::scan(&px, 1, 16, 1);
         assert_eq!(r.row(0), &[(0, 7), (7, 16)]);
         let mut h = FlatRuns::default();
-        r.halve(2, 1, &mut h, |k, u| px[2 * k * 16 + u] == px[(2 * k + 1) * 16 + u]);
-        // blocks 0..2 are all a (columns 0..5 of both rows), blocks 4..8 all b
+        r.halve(2, 1, &mut h);
+        // blocks 0..2 are all a (columns 0..5 of both rows), blocks 4..8 all b (2 and 3
+        // mix); blocks 0..7 of rows 2 and 3 are all c over e
         assert_eq!(h.row(0), &[(0, 2), (4, 8)]);
         assert_eq!(h.row(1), &[(0, 7)]);
         let mut short = FlatRuns::default();
-        r.halve(2, 3, &mut short, |k, u| px[2 * k * 16 + u] == px[(2 * k + 1) * 16 + u]);
+        r.halve(2, 3, &mut short);
         assert_eq!(short.row(0), &[(4, 8)]);
         let mut seen = Vec::new();
         segments(h.row(0), 8, |a, b, flat| seen.push((a, b, flat)));

@@ -245,7 +245,7 @@ impl Cuts {
     /// Writes the row: the cut pixels cast one by one, each span between them filled
     /// with the colour of its first pixel. `piece(a, b, colour)` is told of every span
     /// and pixel in order.
-    pub(super) fn paint(&self, row: &mut [u8], pixel: impl Fn(usize) -> [u8; 3], piece: &mut dyn FnMut(usize, usize, [u8; 3])) {
+    pub(super) fn paint(&self, row: &mut [u8], pixel: impl Fn(usize) -> [u8; 3], mut piece: impl FnMut(usize, usize, [u8; 3])) {
         let mut next = 0;
         for &(lo, hi) in &self.ranges {
             if lo > next {
