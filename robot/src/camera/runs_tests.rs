@@ -98,7 +98,7 @@ fn runs_give_the_layers_of_every_pixel_on_made_up_images() {
                     cut.clear(1);
                     for y in 0..h {
                         for &(s, e) in runs.row(y) {
-                            let mid = (s + e) / 2 | 1;
+                            let mid = ((s + e) / 2) | 1;
                             cut.push(s as usize, mid.min(e) as usize);
                             cut.push(mid.min(e) as usize, e as usize);
                         }
