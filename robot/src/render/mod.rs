@@ -247,7 +247,7 @@ impl PinholeCamera {
             let d0 = self.ray(0.5, v as f64 + 0.5);
             let ball_row = caster.ball_row(d0);
             cuts.find(&caster, &edges, v, d0, ball_row.is_some(), w);
-            let pixel = |u| caster.pixel(d0, ball_row, u);
+            let pixel = |u| caster.pixel(d0, &ball_row, u);
             match runs.as_deref_mut() {
                 Some(r) => {
                     let mut r = runs::RowRuns::new(r);
@@ -268,7 +268,7 @@ impl PinholeCamera {
             let d0 = self.ray(0.5, v as f64 + 0.5);
             let ball_row = caster.ball_row(d0);
             for (u, px) in row.chunks_exact_mut(3).enumerate() {
-                px.copy_from_slice(&caster.pixel(d0, ball_row, u));
+                px.copy_from_slice(&caster.pixel(d0, &ball_row, u));
             }
         }
     }
@@ -315,10 +315,11 @@ impl<'a> Caster<'a> {
     }
 
     /// The colour of pixel `u` of the row whose first ray is `d0`.
-    fn pixel(&self, d0: Vec3, ball_row: BallRow, u: usize) -> [u8; 3] {
+    /// (`ball_row` by reference: a call per cast pixel copied it whole.)
+    fn pixel(&self, d0: Vec3, ball_row: &BallRow, u: usize) -> [u8; 3] {
         let (c, psd_wall_x) = (self.c, self.psd_wall_x);
         let d = add(d0, scale(self.du, u as f64));
-        if let Some((b, centre, oc, cc)) = ball_row {
+        if let Some((b, centre, oc, cc)) = *ball_row {
             let aa = dot(d, d);
             let bb = dot(oc, d);
             let disc = bb * bb - aa * cc;
