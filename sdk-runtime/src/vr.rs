@@ -221,13 +221,14 @@ impl VrService {
         self.publish(rt, service, vector.len(), |region| region.copy_from_slice(vector));
     }
 
-    /// Has `fill` write a vector of `len` bytes into a new shared region (a region is
+    /// Has `fill` write a vector of `len` bytes (every one of them: the region is not
+    /// zeroed, it may hold an earlier vector) into a new shared region (a region is
     /// never rewritten while an observer may hold it, robot-api 7) and hands it, with
     /// the region's one reference, to the system object providing `service`. False when
     /// nobody provides the service or no region could be had (`fill` is not called).
     fn publish(&self, rt: &Runtime, service: usize, len: usize, fill: impl FnOnce(&mut [u8])) -> bool {
         let Some((oid, sel)) = self.wiring().providers[service] else { return false };
-        let Some((mem_id, base)) = rt.shm.alloc(len) else { return false };
+        let Some((mem_id, base)) = rt.shm.alloc_dirty(len) else { return false };
         // SAFETY: a fresh region of len bytes, ours until it is sent.
         let region = unsafe { std::slice::from_raw_parts_mut(base, len) };
         fill(region);

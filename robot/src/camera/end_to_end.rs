@@ -599,7 +599,7 @@ fn lcg_bytes(seed: u32, n: usize) -> Vec<u8> {
 }
 
 /// Tables exercising several channels and per-segment ranges.
-fn test_lut() -> CdtLut {
+pub(super) fn test_lut() -> CdtLut {
     let mut lut = CdtLut::default();
     let green = [cdt_entry(110, 0, 127, 0); 32];
     let mut stairs = [0u32; 32];

@@ -4,6 +4,7 @@ use super::cdt::{CdtLut, CDT_CHANNELS};
 use super::colour::{clip, luma, ycrcb_to_rgb};
 use super::source::RgbImage;
 use crate::image::{ImageLayout, LayerLayout, TAG_SIZE};
+use crate::render::{segments, FlatRuns};
 
 // The loops below are shaped for the auto-vectoriser (~0.1 ms per ERS-7 image in
 // release on x86-64, against ~0.6 ms for a per-pixel loop over the formulas): rows
@@ -44,6 +45,13 @@ fn six<T>(row: &mut [T], w: usize) -> [&mut [T]; 6] {
     std::array::from_fn(|_| parts.next().expect("a row of six bands"))
 }
 
+/// Columns `a..e` of six bands (written out: `each_mut().map` is not inlined).
+#[inline(always)]
+fn sub6<'a, T>(parts: &'a mut [&mut [T]; 6], a: usize, e: usize) -> [&'a mut [T]; 6] {
+    let [p0, p1, p2, p3, p4, p5] = parts;
+    [&mut p0[a..e], &mut p1[a..e], &mut p2[a..e], &mut p3[a..e], &mut p4[a..e], &mut p5[a..e]]
+}
+
 /// The two RGB pixels of `q` (6 bytes), read as two little-endian words.
 #[inline(always)]
 fn pixel_pair(q: &[u8]) -> [[i32; 3]; 2] {
@@ -53,9 +61,23 @@ fn pixel_pair(q: &[u8]) -> [[i32; 3]; 2] {
     [[byte(0), byte(1), byte(2)], [byte(3), hi & 0xff, hi >> 8]]
 }
 
-/// Writes layer H of `layout` from the sensor-resolution RGB image (`2w × 2h`).
+/// The pieces of a layer row: the row's runs (all of it per pixel without runs).
 #[inline(always)]
-fn synth_from_rgb(l: &LayerLayout, rgb: &[u8], dst: &mut [u8]) {
+fn row_runs(runs: Option<&FlatRuns>, y: usize) -> &[(u32, u32)] {
+    runs.map_or(&[], |r| r.row(y))
+}
+
+/// Writes `band[a..b]` from its first pixel `band[a]` (a flat run).
+#[inline(always)]
+fn copy_first(band: &mut [u8], a: usize, b: usize) {
+    let v = band[a];
+    band[a + 1..b].fill(v);
+}
+
+/// Writes layer H of `layout` from the sensor-resolution RGB image (`2w × 2h`); the
+/// pixels of a run of `runs` are copies of the run's first one.
+#[inline(always)]
+fn synth_from_rgb(l: &LayerLayout, rgb: &[u8], dst: &mut [u8], runs: Option<&FlatRuns>) {
     let w = l.width;
     let sensor_row = 2 * w * 3;
     // Per block of a row: the luminances a b / c d, ΣR − ΣY and ΣB − ΣY, computed in a
@@ -63,31 +85,46 @@ fn synth_from_rgb(l: &LayerLayout, rgb: &[u8], dst: &mut [u8]) {
     // vectorise much better than one).
     let mut block = vec![0i16; 6 * w];
     let rows = dst.chunks_exact_mut(l.row_stride()).zip(rgb.chunks_exact(2 * sensor_row)).take(l.height);
-    for (row, pair) in rows {
+    for (y, (row, pair)) in rows.enumerate() {
         let (top, bot) = pair.split_at(sensor_row);
-        let [ya, yb, yc, yd, dr, db] = six(&mut block, w);
-        let pixels = top.chunks_exact(6).zip(bot.chunks_exact(6));
-        let sums = ya.iter_mut().zip(yb.iter_mut()).zip(yc.iter_mut()).zip(yd.iter_mut()).zip(dr.iter_mut()).zip(db.iter_mut());
-        for ((t, u), (((((ya, yb), yc), yd), dr), db)) in pixels.zip(sums) {
-            let [[r0, g0, b0], [r1, g1, b1]] = pixel_pair(t);
-            let [[r2, g2, b2], [r3, g3, b3]] = pixel_pair(u);
-            let (a, b, c, d) = (luma(r0, g0, b0), luma(r1, g1, b1), luma(r2, g2, b2), luma(r3, g3, b3));
-            let sy = a + b + c + d;
-            [*ya, *yb, *yc, *yd] = [a, b, c, d].map(|v| v as i16);
-            *dr = (r0 + r1 + r2 + r3 - sy) as i16;
-            *db = (b0 + b1 + b2 + b3 - sy) as i16;
-        }
-        let [yll, cr, cb, lh, hl, hh] = six(row, w);
-        let bands = yll.iter_mut().zip(cr).zip(cb).zip(lh).zip(hl).zip(hh);
-        let sums = ya.iter().zip(yb.iter()).zip(yc.iter()).zip(yd.iter()).zip(dr.iter()).zip(db.iter());
-        for ((((((&a, &b), &c), &d), &dr), &db), (((((yll, cr), cb), lh), hl), hh)) in sums.zip(bands) {
-            *yll = mean4((a + b + c + d) as u16);
-            *cr = chroma(dr);
-            *cb = chroma(db);
-            *lh = high_pass(c + d - a - b);
-            *hl = high_pass(b + d - a - c);
-            *hh = high_pass(a + d - b - c);
-        }
+        let mut sums = six(&mut block, w);
+        let mut bands = six(row, w);
+        segments(row_runs(runs, y), w, |a, b, flat| {
+            let e = if flat { a + 1 } else { b };
+            let sums = sub6(&mut sums, a, e);
+            h_blocks(&top[6 * a..6 * e], &bot[6 * a..6 * e], sums, sub6(&mut bands, a, e));
+            if flat {
+                bands_copy_first(&mut bands, a, b);
+            }
+        });
+    }
+}
+
+/// Layer H pixels from the two sensor rows `top` and `bot` of their blocks (`sums`: scratch).
+#[inline(always)]
+fn h_blocks(top: &[u8], bot: &[u8], sums: [&mut [i16]; 6], bands: [&mut [u8]; 6]) {
+    let [ya, yb, yc, yd, dr, db] = sums;
+    let pixels = top.chunks_exact(6).zip(bot.chunks_exact(6));
+    let s = ya.iter_mut().zip(yb.iter_mut()).zip(yc.iter_mut()).zip(yd.iter_mut()).zip(dr.iter_mut()).zip(db.iter_mut());
+    for ((t, u), (((((ya, yb), yc), yd), dr), db)) in pixels.zip(s) {
+        let [[r0, g0, b0], [r1, g1, b1]] = pixel_pair(t);
+        let [[r2, g2, b2], [r3, g3, b3]] = pixel_pair(u);
+        let (a, b, c, d) = (luma(r0, g0, b0), luma(r1, g1, b1), luma(r2, g2, b2), luma(r3, g3, b3));
+        let sy = a + b + c + d;
+        [*ya, *yb, *yc, *yd] = [a, b, c, d].map(|v| v as i16);
+        *dr = (r0 + r1 + r2 + r3 - sy) as i16;
+        *db = (b0 + b1 + b2 + b3 - sy) as i16;
+    }
+    let [yll, cr, cb, lh, hl, hh] = bands;
+    let bands = yll.iter_mut().zip(cr).zip(cb).zip(lh).zip(hl).zip(hh);
+    let s = ya.iter().zip(yb.iter()).zip(yc.iter()).zip(yd.iter()).zip(dr.iter()).zip(db.iter());
+    for ((((((&a, &b), &c), &d), &dr), &db), (((((yll, cr), cb), lh), hl), hh)) in s.zip(bands) {
+        *yll = mean4((a + b + c + d) as u16);
+        *cr = chroma(dr);
+        *cb = chroma(db);
+        *lh = high_pass(c + d - a - b);
+        *hl = high_pass(b + d - a - c);
+        *hh = high_pass(a + d - b - c);
     }
 }
 
@@ -99,33 +136,46 @@ fn byte_pair(q: &[u8]) -> (u16, u16) {
 }
 
 /// Writes an HPF layer `l` from the Y/Cr/Cb bands of the previous (double-size) HPF
-/// layer `src` (whose data is `s`).
+/// layer `src` (whose data is `s`); the pixels of a run of `runs` are copies of the
+/// run's first one.
 #[inline(always)]
-fn synth_from_layer(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8]) {
+fn synth_from_layer(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8], runs: Option<&FlatRuns>) {
     let (w, sw) = (l.width, src.width);
     let rows = dst.chunks_exact_mut(l.row_stride()).zip(s.chunks_exact(2 * src.row_stride())).take(l.height);
     debug_assert_eq!(sw, 2 * w);
-    for (row, pair) in rows {
+    for (y, (row, pair)) in rows.enumerate() {
         let (top, bot) = pair.split_at(src.row_stride());
-        let (ycc, rest) = row.split_at_mut(3 * w);
-        // Y LL, Cr and Cb (the first three bands of both layers, so one loop): means
-        // of the source's Y, Cr and Cb over 2×2 blocks
-        let blocks = top[..3 * sw].chunks_exact(2).zip(bot[..3 * sw].chunks_exact(2));
-        for (o, (t, u)) in ycc.iter_mut().zip(blocks) {
-            let ((a, b), (c, d)) = (byte_pair(t), byte_pair(u));
-            *o = mean4(a + b + c + d);
-        }
-        let (lh, rest) = rest.split_at_mut(w);
-        let (hl, hh) = rest.split_at_mut(w);
-        let bands = lh.iter_mut().zip(hl).zip(hh);
-        for ((t, u), ((lh, hl), hh)) in top[..sw].chunks_exact(2).zip(bot[..sw].chunks_exact(2)).zip(bands) {
-            let ((a, b), (c, d)) = (byte_pair(t), byte_pair(u));
-            let (a, b, c, d) = (a as i16, b as i16, c as i16, d as i16);
-            *lh = high_pass(c + d - a - b);
-            *hl = high_pass(b + d - a - c);
-            *hh = high_pass(a + d - b - c);
-        }
+        let mut bands = six(row, w);
+        segments(row_runs(runs, y), w, |a, b, flat| {
+            let e = if flat { a + 1 } else { b };
+            let [yll, cr, cb, lh, hl, hh] = sub6(&mut bands, a, e);
+            // Y LL, Cr and Cb: means of the source's Y, Cr and Cb over 2×2 blocks
+            for (k, out) in [yll, cr, cb].into_iter().enumerate() {
+                let (t, u) = (&top[k * sw + 2 * a..k * sw + 2 * e], &bot[k * sw + 2 * a..k * sw + 2 * e]);
+                for (o, (t, u)) in out.iter_mut().zip(t.chunks_exact(2).zip(u.chunks_exact(2))) {
+                    let ((a, b), (c, d)) = (byte_pair(t), byte_pair(u));
+                    *o = mean4(a + b + c + d);
+                }
+            }
+            let hp = lh.iter_mut().zip(hl).zip(hh);
+            for ((t, u), ((lh, hl), hh)) in top[2 * a..2 * e].chunks_exact(2).zip(bot[2 * a..2 * e].chunks_exact(2)).zip(hp) {
+                let ((a, b), (c, d)) = (byte_pair(t), byte_pair(u));
+                let (a, b, c, d) = (a as i16, b as i16, c as i16, d as i16);
+                *lh = high_pass(c + d - a - b);
+                *hl = high_pass(b + d - a - c);
+                *hh = high_pass(a + d - b - c);
+            }
+            if flat {
+                bands_copy_first(&mut bands, a, b);
+            }
+        });
     }
+}
+
+/// [`copy_first`] on every band.
+#[inline(always)]
+fn bands_copy_first(bands: &mut [&mut [u8]; 6], a: usize, b: usize) {
+    bands.iter_mut().for_each(|band| copy_first(band, a, b));
 }
 
 /// Adds the number of bytes of `pixels` with bit k set to `counts[k]`.
@@ -140,19 +190,26 @@ fn count_bits(pixels: &[u8], counts: &mut [u32; CDT_CHANNELS]) {
     }
 }
 
-/// Writes the CDT layer `l` from an HPF layer of the same size; returns per-channel
-/// counts of matched pixels (excluding the tag bytes).
+/// Writes the CDT layer `l` from an HPF layer of the same size (the pixels of a run of
+/// `runs` are copies of the run's first one); returns per-channel counts of matched
+/// pixels (excluding the tag bytes).
 #[inline(always)]
-fn synth_cdt(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8], lut: &CdtLut) -> [u32; CDT_CHANNELS] {
+fn synth_cdt(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8], lut: &CdtLut, runs: Option<&FlatRuns>) -> [u32; CDT_CHANNELS] {
     let mut counts = [0u32; CDT_CHANNELS];
     let (w, h, sw) = (l.width.min(src.width), l.height.min(src.height), src.width);
     let rows = dst.chunks_exact_mut(l.row_stride()).zip(s.chunks_exact(src.row_stride())).take(h);
     for (y, (drow, srow)) in rows.enumerate() {
         let drow = &mut drow[..w];
         let (ys, crs, cbs) = (&srow[..w], &srow[sw..sw + w], &srow[2 * sw..2 * sw + w]);
-        for (((d, &y), &cr), &cb) in drow.iter_mut().zip(ys).zip(crs).zip(cbs) {
-            *d = lut.classify(y, cr, cb);
-        }
+        segments(row_runs(runs, y), w, |a, b, flat| {
+            let e = if flat { a + 1 } else { b };
+            for (((d, &y), &cr), &cb) in drow[a..e].iter_mut().zip(&ys[a..e]).zip(&crs[a..e]).zip(&cbs[a..e]) {
+                *d = lut.classify(y, cr, cb);
+            }
+            if flat {
+                copy_first(drow, a, b);
+            }
+        });
         // the tag bytes of the last row hold no pixels
         count_bits(if y + 1 == l.height { drow.get(TAG_SIZE..).unwrap_or(&[]) } else { drow }, &mut counts);
     }
@@ -162,24 +219,79 @@ fn synth_cdt(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8], lut: 
 /// Fills the four layers of `buf` (an image vector of `layout`) from a sensor-size
 /// RGB image and writes the tags. Returns the per-channel CDT pixel counts.
 pub fn synthesize(layout: &ImageLayout, rgb: &[u8], lut: &CdtLut, field_counter: u32, buf: &mut [u8]) -> [u32; CDT_CHANNELS] {
+    synthesize_runs(layout, rgb, None, lut, field_counter, buf)
+}
+
+/// Shortest runs, in pixels of the layer, that are copied rather than computed pixel by
+/// pixel (shorter ones cost more in split loops than they save).
+pub const MIN_RUN: usize = 8;
+
+/// The runs of the layers below the sensor image (kept between images to spare the
+/// allocations).
+#[derive(Clone, Debug)]
+pub struct LayerRuns {
+    h: FlatRuns,
+    m: FlatRuns,
+    l: FlatRuns,
+    /// Shortest run copied ([`MIN_RUN`]; tests try shorter ones).
+    min: usize,
+}
+
+impl Default for LayerRuns {
+    fn default() -> LayerRuns {
+        LayerRuns::with_min(MIN_RUN)
+    }
+}
+
+impl LayerRuns {
+    pub fn with_min(min: usize) -> LayerRuns {
+        LayerRuns { h: FlatRuns::default(), m: FlatRuns::default(), l: FlatRuns::default(), min }
+    }
+}
+
+/// [`synthesize`] given the runs of identical pixels of `rgb` (`runs`, e.g. the
+/// renderer's, with the scratch their layers' runs are made in): the same bytes, long
+/// runs copied instead of computed pixel by pixel ([`crate::render::FlatRuns`]).
+pub fn synthesize_runs(
+    layout: &ImageLayout,
+    rgb: &[u8],
+    runs: Option<(&FlatRuns, &mut LayerRuns)>,
+    lut: &CdtLut,
+    field_counter: u32,
+    buf: &mut [u8],
+) -> [u32; CDT_CHANNELS] {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") {
         // SAFETY: the CPU has AVX2 (checked just above), all `synthesize_avx2` needs.
-        return unsafe { synthesize_avx2(layout, rgb, lut, field_counter, buf) };
+        return unsafe { synthesize_avx2(layout, rgb, runs, lut, field_counter, buf) };
     }
-    synthesize_layers(layout, rgb, lut, field_counter, buf)
+    synthesize_layers(layout, rgb, runs, lut, field_counter, buf)
 }
 
 /// [`synthesize_layers`] compiled for AVX2: the same integer arithmetic (the same bytes)
 /// in wider vectors, ~2× faster than baseline x86-64's SSE2.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn synthesize_avx2(layout: &ImageLayout, rgb: &[u8], lut: &CdtLut, field_counter: u32, buf: &mut [u8]) -> [u32; CDT_CHANNELS] {
-    synthesize_layers(layout, rgb, lut, field_counter, buf)
+fn synthesize_avx2(
+    layout: &ImageLayout,
+    rgb: &[u8],
+    runs: Option<(&FlatRuns, &mut LayerRuns)>,
+    lut: &CdtLut,
+    field_counter: u32,
+    buf: &mut [u8],
+) -> [u32; CDT_CHANNELS] {
+    synthesize_layers(layout, rgb, runs, lut, field_counter, buf)
 }
 
 #[inline(always)]
-fn synthesize_layers(layout: &ImageLayout, rgb: &[u8], lut: &CdtLut, field_counter: u32, buf: &mut [u8]) -> [u32; CDT_CHANNELS] {
+fn synthesize_layers(
+    layout: &ImageLayout,
+    rgb: &[u8],
+    runs: Option<(&FlatRuns, &mut LayerRuns)>,
+    lut: &CdtLut,
+    field_counter: u32,
+    buf: &mut [u8],
+) -> [u32; CDT_CHANNELS] {
     let [lh, lm, ll, lc] = layout.layers;
     debug_assert!(lh.data_offset + lh.data_size() <= lm.data_offset && lm.data_offset + lm.data_size() <= ll.data_offset);
     debug_assert!(ll.data_offset + ll.data_size() <= lc.data_offset);
@@ -188,10 +300,23 @@ fn synthesize_layers(layout: &ImageLayout, rgb: &[u8], lut: &CdtLut, field_count
     let (h, rest) = rest.split_at_mut(lm.data_offset - lh.data_offset);
     let (m, rest) = rest.split_at_mut(ll.data_offset - lm.data_offset);
     let (l, rest) = rest.split_at_mut(lc.data_offset - ll.data_offset);
-    synth_from_rgb(&lh, rgb, h);
-    synth_from_layer(&lh, h, &lm, m);
-    synth_from_layer(&lm, m, &ll, l);
-    let counts = synth_cdt(&lm, m, &lc, rest, lut);
+    let counts = match runs {
+        None => {
+            synth_from_rgb(&lh, rgb, h, None);
+            synth_from_layer(&lh, h, &lm, m, None);
+            synth_from_layer(&lm, m, &ll, l, None);
+            synth_cdt(&lm, m, &lc, rest, lut, None)
+        }
+        Some((sensor, r)) => {
+            sensor.halve(lh.height, r.min, &mut r.h);
+            synth_from_rgb(&lh, rgb, h, Some(&r.h));
+            r.h.halve(lm.height, r.min, &mut r.m);
+            synth_from_layer(&lh, h, &lm, m, Some(&r.m));
+            r.m.halve(ll.height, r.min, &mut r.l);
+            synth_from_layer(&lm, m, &ll, l, Some(&r.l));
+            synth_cdt(&lm, m, &lc, rest, lut, Some(&r.m))
+        }
+    };
     layout.write_tags(buf, field_counter, counts).expect("buffer sized to layout");
     counts
 }

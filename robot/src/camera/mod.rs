@@ -32,6 +32,8 @@ mod end_to_end;
 mod layers;
 #[cfg(test)]
 mod reuse_tests;
+#[cfg(test)]
+mod runs_tests;
 mod source;
 
 pub use cdt::*;
@@ -41,7 +43,7 @@ pub use source::*;
 
 use super::image::ImageLayout;
 use super::model::{Design, PrimitiveId};
-use super::render::{CameraWorld, PinholeCamera};
+use super::render::{CameraWorld, FlatRuns, PinholeCamera};
 use super::status::*;
 
 // Camera parameters (robot-api 5.3, 5.4, 10).
@@ -132,6 +134,11 @@ pub struct Camera {
     pub last_counts: [u32; CDT_CHANNELS],
     pub settings: CameraSettings,
     reuse: Reuse,
+    /// Runs of identical pixels of `rgb` when it is a render (the settings map equal
+    /// pixels to equal pixels, so they hold after them too), and their layers' runs.
+    runs: Option<FlatRuns>,
+    layer_runs: LayerRuns,
+    spare_runs: FlatRuns,
 }
 
 /// What `rgb` and the last layers were made from: a robot whose camera and scene did not
@@ -161,6 +168,9 @@ impl Camera {
             last_counts: [0; CDT_CHANNELS],
             settings: CameraSettings::default(),
             reuse: Reuse::default(),
+            runs: None,
+            layer_runs: LayerRuns::default(),
+            spare_runs: FlatRuns::default(),
         }
     }
 
@@ -193,8 +203,10 @@ impl Camera {
             self.reuse.rgb_unchanged = true;
             return;
         }
-        cam.render(world, wall_mm, &mut self.rgb.data);
+        let mut runs = self.runs.take().unwrap_or_else(|| std::mem::take(&mut self.spare_runs));
+        cam.render(world, wall_mm, &mut self.rgb.data, Some((&mut runs, 2 * MIN_RUN)));
         self.rgb_replaced();
+        self.runs = Some(runs);
         self.reuse.scene = Some((*cam, world.clone(), wall_mm, self.settings));
     }
 
@@ -202,6 +214,10 @@ impl Camera {
     fn rgb_replaced(&mut self) {
         self.settings.apply(&mut self.rgb.data);
         self.reuse = Reuse::default();
+        // (a render records its runs again)
+        if let Some(r) = self.runs.take() {
+            self.spare_runs = r;
+        }
     }
 
     /// Bytes of one image vector ([`Camera::build_vector`]'s `out`).
@@ -227,7 +243,8 @@ impl Camera {
                 self.layout.write_tags(out, self.field_counter, *counts).expect("sized");
             }
             _ => {
-                self.last_counts = synthesize(&self.layout, &self.rgb.data, &self.lut, self.field_counter, out);
+                let runs = self.runs.as_ref().map(|r| (r, &mut self.layer_runs));
+                self.last_counts = synthesize_runs(&self.layout, &self.rgb.data, runs, &self.lut, self.field_counter, out);
                 // Kept only once a picture repeats: a moving camera pays no copy.
                 self.reuse.layers = unchanged.then(|| (key, out[start..end].to_vec(), self.last_counts));
             }

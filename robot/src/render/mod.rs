@@ -34,7 +34,10 @@ use super::kinematics::Body;
 use super::model::{Design, Part};
 use super::scene::{posture, Posture, Scene};
 
+mod runs;
 mod spans;
+
+pub use runs::{segments, FlatRuns};
 
 /// A ball lying on the floor.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -229,17 +232,29 @@ impl PinholeCamera {
     /// into spans of one flat colour ([`spans`]): one pixel of a span is cast, the
     /// pixels near an edge and those that may show the ball or its shadow are cast one
     /// by one, so the image is the same as casting every pixel ([`Caster::pixel`]).
-    pub fn render(&self, world: &CameraWorld, wall_mm: Option<f64>, rgb: &mut Vec<u8>) {
+    /// `runs` (when given) gets the image's runs of at least `min_run` identical pixels.
+    pub fn render(&self, world: &CameraWorld, wall_mm: Option<f64>, rgb: &mut Vec<u8>, runs: Option<(&mut FlatRuns, usize)>) {
         let (w, h) = (self.width, self.height);
         rgb.resize(w * h * 3, 0);
         let caster = Caster::new(self, world, wall_mm);
         let edges = spans::Edges::new(&caster, self);
         let mut cuts = spans::Cuts::default();
+        let mut runs = runs.map(|(r, min_run)| {
+            r.clear(min_run);
+            r
+        });
         for (v, row) in rgb.chunks_exact_mut(w * 3).take(h).enumerate() {
             let d0 = self.ray(0.5, v as f64 + 0.5);
             let ball_row = caster.ball_row(d0);
             cuts.find(&caster, &edges, v, d0, ball_row.is_some(), w);
-            cuts.paint(row, |u| caster.pixel(d0, ball_row, u));
+            let pixel = |u| caster.pixel(d0, &ball_row, u);
+            match runs.as_deref_mut() {
+                Some(r) => {
+                    let mut r = runs::RowRuns::new(r);
+                    cuts.paint(row, pixel, |a, b, c| r.piece(a, b, c));
+                }
+                None => cuts.paint(row, pixel, |_, _, _| {}),
+            }
         }
     }
 
@@ -253,7 +268,7 @@ impl PinholeCamera {
             let d0 = self.ray(0.5, v as f64 + 0.5);
             let ball_row = caster.ball_row(d0);
             for (u, px) in row.chunks_exact_mut(3).enumerate() {
-                px.copy_from_slice(&caster.pixel(d0, ball_row, u));
+                px.copy_from_slice(&caster.pixel(d0, &ball_row, u));
             }
         }
     }
@@ -300,10 +315,11 @@ impl<'a> Caster<'a> {
     }
 
     /// The colour of pixel `u` of the row whose first ray is `d0`.
-    fn pixel(&self, d0: Vec3, ball_row: BallRow, u: usize) -> [u8; 3] {
+    /// (`ball_row` by reference: a call per cast pixel copied it whole.)
+    fn pixel(&self, d0: Vec3, ball_row: &BallRow, u: usize) -> [u8; 3] {
         let (c, psd_wall_x) = (self.c, self.psd_wall_x);
         let d = add(d0, scale(self.du, u as f64));
-        if let Some((b, centre, oc, cc)) = ball_row {
+        if let Some((b, centre, oc, cc)) = *ball_row {
             let aa = dot(d, d);
             let bb = dot(oc, d);
             let disc = bb * bb - aa * cc;
@@ -408,7 +424,7 @@ fn round_byte(x: f64) -> u8 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::model::{RobotModel, POSTURE_PARTS, POSTURE_SLEEP, POSTURE_STAND};
 
@@ -462,13 +478,13 @@ mod tests {
     }
 
     /// A small deterministic generator for the scene sweep.
-    struct Lcg(u64);
+    pub(crate) struct Lcg(pub u64);
     impl Lcg {
-        fn next(&mut self) -> f64 {
+        pub(crate) fn next(&mut self) -> f64 {
             self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
             (self.0 >> 11) as f64 / (1u64 << 53) as f64
         }
-        fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        pub(crate) fn range(&mut self, lo: f64, hi: f64) -> f64 {
             lo + (hi - lo) * self.next()
         }
         /// Sometimes exactly `special` (level heads and bodies make rows parallel to edges).
@@ -481,7 +497,7 @@ mod tests {
         }
     }
 
-    fn random_scene(g: &mut Lcg) -> (PinholeCamera, CameraWorld, Option<f64>) {
+    pub(crate) fn random_scene(g: &mut Lcg) -> (PinholeCamera, CameraWorld, Option<f64>) {
         let height = if g.next() < 0.1 { f64::INFINITY } else { g.range(40.0, 350.0) };
         let p = Posture { pitch: g.or(0.0, -0.6, 0.6), roll: g.or(0.0, -0.4, 0.4), height_mm: height, paw_contact: [true; 4] };
         let pose = camera_pose_from(g.or(0.0, -1.4, 0.1), g.or(0.0, -1.6, 1.6), g.or(0.0, -0.3, 0.9), &p);
@@ -511,7 +527,7 @@ mod tests {
     #[test]
     fn spans_give_the_same_image_as_every_pixel() {
         let mut g = Lcg(19);
-        let (mut fast, mut slow) = (Vec::new(), Vec::new());
+        let (mut fast, mut slow, mut runs) = (Vec::new(), Vec::new(), FlatRuns::default());
         // the default scene from the standard postures first
         let mut cases: Vec<_> = [POSTURE_STAND, POSTURE_SLEEP]
             .iter()
@@ -519,8 +535,10 @@ mod tests {
             .collect();
         cases.extend((0..400).map(|_| random_scene(&mut g)));
         for (i, (cam, world, wall)) in cases.iter().enumerate() {
-            cam.render(world, *wall, &mut fast);
+            cam.render(world, *wall, &mut fast, Some((&mut runs, 2)));
             cam.render_every_pixel(world, *wall, &mut slow);
+            // the runs the renderer records are the image's maximal runs
+            assert!(runs == FlatRuns::scan(&fast, 3, cam.width, 2), "case {i}: runs");
             if fast != slow {
                 let k = fast.iter().zip(&slow).position(|(a, b)| a != b).unwrap() / 3;
                 panic!(

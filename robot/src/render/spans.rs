@@ -32,6 +32,62 @@ struct Form {
     a0: f64,
     a1: f64,
     b: f64,
+    /// The rows outside `rows.0..rows.1` keep one sign all along ([`Form::keeps_sign`]).
+    rows: (usize, usize),
+}
+
+impl Form {
+    /// n·d at the first pixel of row `v`, and the margin of its sign.
+    #[inline(always)]
+    fn start(&self, v: f64, size: f64) -> (f64, f64) {
+        (self.a0 + v * self.a1, MARGIN * self.norm * size)
+    }
+
+    /// Whether the form keeps one sign beyond the margin over the whole of row `v`
+    /// (`w` pixels), as it does on most rows.
+    #[inline(always)]
+    fn keeps_sign(&self, v: f64, w: f64, size: f64) -> bool {
+        let (a, m) = self.start(v, size);
+        let z = a + w * self.b;
+        (a > m && z > m) || (a < -m && z < -m)
+    }
+
+    /// The rows of 0..height on which [`Form::keeps_sign`] may be false. Along v the
+    /// form at both ends of a row moves by the same a1, and the rounded sums are
+    /// monotonic in v, so "positive at both ends" holds on a run of rows reaching one
+    /// end of the image and "negative at both ends" on one reaching the other: the
+    /// rows between are found by two bisections (instead of a test on every row).
+    fn rows(&self, height: usize, w: f64, size: f64) -> (usize, usize) {
+        if !self.a1.is_finite() || self.a1 == 0.0 {
+            return (0, height);
+        }
+        let both = |v: usize, sign: f64| {
+            let (a, m) = self.start(v as f64, size);
+            let z = a + w * self.b;
+            sign * a > m && sign * z > m
+        };
+        // the sign held at the top rows, then the one at the bottom rows
+        let (top, bottom) = if self.a1 > 0.0 { (-1.0, 1.0) } else { (1.0, -1.0) };
+        // first row not in the top run, first row of the bottom run
+        let lo = first(height, |v| !both(v, top));
+        let hi = first(height, |v| both(v, bottom));
+        (lo, hi.max(lo))
+    }
+}
+
+/// The first v of 0..n for which `p` holds (n if none), `p` false up to some v and true
+/// from there on.
+fn first(n: usize, p: impl Fn(usize) -> bool) -> usize {
+    let (mut lo, mut hi) = (0, n);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if p(mid) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    lo
 }
 
 /// The forms of one image (camera position and scene fixed).
@@ -52,8 +108,12 @@ impl Edges {
         let last = cam.ray(0.5, cam.height as f64 - 0.5);
         let size = dot(first, first).sqrt().max(dot(last, last).sqrt()) + cam.width as f64 * dot(k.du, k.du).sqrt();
         let mut forms = Vec::new();
-        let mut push =
-            |n: Vec3, when: [Option<(usize, f64)>; 2]| forms.push(Form { norm: dot(n, n).sqrt(), when, a0: dot(n, first), a1: dot(n, dv), b: dot(n, k.du) });
+        let (height, w) = (cam.height, cam.width as f64);
+        let mut push = |n: Vec3, when: [Option<(usize, f64)>; 2]| {
+            let mut f = Form { norm: dot(n, n).sqrt(), when, a0: dot(n, first), a1: dot(n, dv), b: dot(n, k.du), rows: (0, height) };
+            f.rows = f.rows(height, w, size);
+            forms.push(f)
+        };
         // Floor or not, and the x/y direction (wall faces, the PSD wall).
         push(EZ, [None, None]);
         push(EX, [None, None]);
@@ -183,13 +243,13 @@ impl Cuts {
         });
         let v = v as f64;
         let w = width as f64;
+        let row = v as usize;
         for f in &e.forms {
-            let (a, m) = (f.a0 + v * f.a1, MARGIN * f.norm * size);
             // most forms keep one sign over the whole row
-            let z = a + w * f.b;
-            if (a > m && z > m) || (a < -m && z < -m) {
+            if !(f.rows.0..f.rows.1).contains(&row) || f.keeps_sign(v, w, size) {
                 continue;
             }
+            let (a, m) = f.start(v, size);
             let mut s = near_zero(a, f.b, m);
             for &(axis, sign) in f.when.iter().flatten() {
                 s = s.and(signs[axis][(sign > 0.0) as usize]);
@@ -243,30 +303,40 @@ impl Cuts {
     }
 
     /// Writes the row: the cut pixels cast one by one, each span between them filled
-    /// with the colour of its first pixel.
-    pub(super) fn paint(&self, row: &mut [u8], pixel: impl Fn(usize) -> [u8; 3]) {
+    /// with the colour of its first pixel. `piece(a, b, colour)` is told of every span
+    /// and pixel in order.
+    pub(super) fn paint(&self, row: &mut [u8], pixel: impl Fn(usize) -> [u8; 3], mut piece: impl FnMut(usize, usize, [u8; 3])) {
         let mut next = 0;
         for &(lo, hi) in &self.ranges {
             if lo > next {
-                fill(&mut row[3 * next..3 * lo], pixel(next));
+                let c = pixel(next);
+                fill(&mut row[3 * next..3 * lo], c);
+                piece(next, lo, c);
                 next = lo;
             }
             for u in next..hi {
-                row[3 * u..3 * u + 3].copy_from_slice(&pixel(u));
+                let c = pixel(u);
+                row[3 * u..3 * u + 3].copy_from_slice(&c);
+                piece(u, u + 1, c);
             }
             next = next.max(hi);
         }
         if next < self.width {
-            fill(&mut row[3 * next..3 * self.width], pixel(next));
+            let c = pixel(next);
+            fill(&mut row[3 * next..3 * self.width], c);
+            piece(next, self.width, c);
         }
     }
 }
 
 /// Fills `px` (whole RGB pixels) with one colour, 16 pixels per copy.
 fn fill(px: &mut [u8], c: [u8; 3]) {
+    // the 24-byte period of the colour as three words (16 three-byte copies cost more)
+    let x = u64::from(c[0]) | u64::from(c[1]) << 8 | u64::from(c[2]) << 16;
+    let words = [x | x << 24 | x << 48, x >> 16 | x << 8 | x << 32 | x << 56, x >> 8 | x << 16 | x << 40];
     let mut block = [0u8; 48];
-    for p in block.chunks_exact_mut(3) {
-        p.copy_from_slice(&c);
+    for (b, w) in block.chunks_exact_mut(8).zip(words.iter().cycle()) {
+        b.copy_from_slice(&w.to_le_bytes());
     }
     let mut chunks = px.chunks_exact_mut(48);
     for ch in &mut chunks {

@@ -1,7 +1,8 @@
 //! Camera and frame figures (issue 19, goals 1 and 2): the host time of one ERS-7 image
 //! (the built-in scene and every layer) in this process, beside a copy of an image-sized
-//! buffer measured in the same round; whole camera programs at `--speed max`, beside the
-//! same program without the camera; and the host time of one kinematic frame.
+//! buffer measured in the same round; whole camera programs at `--speed max` (the head
+//! sweeping all the time, so no image repeats), beside the same program without the
+//! camera; and the host time of one kinematic frame.
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
@@ -42,30 +43,39 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
-/// Seconds a `--speed max` run of `ms` for `secs` of robot time takes (process included).
-fn max_speed_run(exe: &Path, ms: &Path, root: &Path, secs: f64) -> Result<f64> {
+/// Seconds a `--speed max` run of `ms` for `secs` of robot time takes (process included),
+/// and its stdout.
+fn max_speed_run(exe: &Path, ms: &Path, root: &Path, secs: f64) -> Result<(f64, String)> {
     let t = Instant::now();
     let out = Command::new(exe).args(["run", "-q", "--speed", "max", "--for", &format!("{secs}s"), "--sdk"]).arg(root).arg(ms).output()?;
     if !out.status.success() {
         bail!("{} at --speed max failed: {}", ms.display(), String::from_utf8_lossy(&out.stderr));
     }
-    Ok(t.elapsed().as_secs_f64())
+    Ok((t.elapsed().as_secs_f64(), String::from_utf8_lossy(&out.stdout).into_owned()))
 }
 
-/// movehead with camwatch's object added (reads every image): a camera program whose head
-/// moves for its first ~5.7 s. Made from the two built MS trees.
-pub fn camera_head_ms(movehead: &Path, camwatch: &Path, work: &Path) -> Result<PathBuf> {
-    let dst = work.join("camhead/MS");
+/// Seconds a `--speed max` run of `ms` for `secs` of robot time takes, its start-up (a
+/// 0.1 s run) taken off, and its stdout.
+fn max_speed_run_net(exe: &Path, ms: &Path, root: &Path, secs: f64) -> Result<(f64, String)> {
+    let (long, out) = max_speed_run(exe, ms, root, secs)?;
+    let (short, _) = max_speed_run(exe, ms, root, 0.1)?;
+    Ok(((long - short).max(1e-6), out))
+}
+
+/// `base` (a built MS tree) with camwatch's object added (it reads every image), made in
+/// `work/name`.
+pub fn with_camwatch(base: &Path, camwatch: &Path, work: &Path, name: &str) -> Result<PathBuf> {
+    let dst = work.join(name).join("MS");
     let _ = std::fs::remove_dir_all(&dst);
-    std::fs::create_dir_all(work.join("camhead"))?;
-    let st = Command::new("cp").arg("-r").arg(movehead).arg(&dst).status()?;
+    std::fs::create_dir_all(work.join(name))?;
+    let st = Command::new("cp").arg("-r").arg(base).arg(&dst).status()?;
     if !st.success() {
-        bail!("cannot copy {}", movehead.display());
+        bail!("cannot copy {}", base.display());
     }
     let (from, to) = (camwatch.join("OPEN-R/MW"), dst.join("OPEN-R/MW"));
     std::fs::copy(from.join("OBJS/WATCH.BIN"), to.join("OBJS/WATCH.BIN"))?;
     for cfg in ["CONF/OBJECT.CFG", "CONF/CONNECT.CFG"] {
-        let mut text = std::fs::read_to_string(to.join(cfg)).with_context(|| format!("{cfg} of {}", movehead.display()))?;
+        let mut text = std::fs::read_to_string(to.join(cfg)).with_context(|| format!("{cfg} of {}", base.display()))?;
         text.push_str(&std::fs::read_to_string(from.join(cfg))?);
         std::fs::write(to.join(cfg), text)?;
     }
@@ -75,9 +85,16 @@ pub fn camera_head_ms(movehead: &Path, camwatch: &Path, work: &Path) -> Result<P
 /// The MS trees the figures run.
 pub struct Programs<'a> {
     pub camwatch: &'a Path,
-    pub movehead: &'a Path,
-    pub camhead: &'a Path,
+    /// headsweep: the head never stops, so every image is new.
+    pub headsweep: &'a Path,
+    /// headsweep + camwatch.
+    pub camsweep: &'a Path,
     pub movelegs: &'a Path,
+}
+
+/// Images camwatch reports having read (`BENCH watch images=N`), if it printed them.
+fn images_read(out: &str) -> Option<f64> {
+    super::fields(out, "BENCH watch").into_iter().find(|(k, _)| k == "images").map(|(_, v)| v)
 }
 
 pub fn camera(exe: &Path, root: &Path, p: &Programs, tab: &mut Table) -> Result<()> {
@@ -87,15 +104,17 @@ pub fn camera(exe: &Path, root: &Path, p: &Programs, tab: &mut Table) -> Result<
     tab.push("camera image, head still (in process)", still, "µs", Some(COPY));
     tab.push(COPY, copy, "µs", None);
 
-    // Whole programs: 5 s while movehead's head moves, with and without the camera.
-    const HEAD_S: f64 = 5.0;
-    let with = max_speed_run(exe, p.camhead, root, HEAD_S)?;
-    let without = max_speed_run(exe, p.movehead, root, HEAD_S)?;
-    const NO_CAMERA: &str = "movehead alone at --speed max (5 s, no camera)";
-    tab.push("camera program, head moving (movehead + camwatch) at --speed max, 5 s", HEAD_S / with, "×", Some(NO_CAMERA));
-    tab.push(NO_CAMERA, HEAD_S / without, "×", None);
-    tab.push("host time per camera image, head moving ((with − without camera) / 150 images)", (with - without).max(0.0) / 150.0 * 1e3, "ms", None);
-    let still = max_speed_run(exe, p.camwatch, root, 60.0)?;
+    // Whole programs: 60 s of robot time with the head sweeping all along (every image
+    // new), with and without the camera, start-up taken off.
+    const SWEEP_S: f64 = 60.0;
+    let (with, out) = max_speed_run_net(exe, p.camsweep, root, SWEEP_S)?;
+    let (without, _) = max_speed_run_net(exe, p.headsweep, root, SWEEP_S)?;
+    const NO_CAMERA: &str = "headsweep alone at --speed max (60 s, start-up taken off, no camera)";
+    tab.push("camsweep: camera program, head sweeping (headsweep + camwatch) at --speed max, 60 s, start-up taken off", SWEEP_S / with, "×", Some(NO_CAMERA));
+    tab.push(NO_CAMERA, SWEEP_S / without, "×", None);
+    let images = images_read(&out).filter(|&n| n > 0.0).unwrap_or(30.0 * SWEEP_S);
+    tab.push("host time per camera image, head sweeping ((camsweep − headsweep alone) / images read)", (with - without).max(0.0) / images * 1e3, "ms", None);
+    let (still, _) = max_speed_run(exe, p.camwatch, root, 60.0)?;
     tab.push("camera program, head still (camwatch) at --speed max, 60 s", 60.0 / still, "×", None);
     Ok(())
 }
@@ -103,8 +122,8 @@ pub fn camera(exe: &Path, root: &Path, p: &Programs, tab: &mut Table) -> Result<
 /// Kinematic frames: movelegs at `--speed max`, per 8 ms frame of robot time (process
 /// start included, measured by a 0.1 s run and taken off).
 pub fn frames(exe: &Path, root: &Path, p: &Programs, tab: &mut Table, reference: &str) -> Result<()> {
-    let long = max_speed_run(exe, p.movelegs, root, 60.0)?;
-    let short = max_speed_run(exe, p.movelegs, root, 0.1)?;
+    let (long, _) = max_speed_run(exe, p.movelegs, root, 60.0)?;
+    let (short, _) = max_speed_run(exe, p.movelegs, root, 0.1)?;
     tab.push("movelegs: virtual-time speed-up at --speed max (60 s of robot time)", 60.0 / long, "×", None);
     tab.push("movelegs: host time per 8 ms frame at --speed max (start-up taken off)", (long - short).max(0.0) / 7500.0 * 1e6, "µs", Some(reference));
     Ok(())

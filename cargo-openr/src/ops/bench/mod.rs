@@ -152,10 +152,10 @@ struct Built {
     pingpong: PathBuf,
     coldstart: PathBuf,
     movelegs: PathBuf,
-    movehead: PathBuf,
+    headsweep: PathBuf,
     jitter: PathBuf,
     camwatch: PathBuf,
-    camhead: PathBuf,
+    camsweep: PathBuf,
 }
 
 /// The groups of figures a run measures (`--only`).
@@ -190,15 +190,15 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path, runs: usize, o
     let build_if = |needed: bool, program: PathBuf| if needed { build(&program, work, root) } else { Ok(PathBuf::new()) };
     let camera_programs = any(&[Group::Camera, Group::Robots]);
     let camwatch = build_if(camera_programs, programs.join("camwatch"))?;
-    let movehead = build_if(wanted(Group::Camera), repo.join("testdata/programs/movehead"))?;
+    let headsweep = build_if(wanted(Group::Camera), programs.join("headsweep"))?;
     let b = Built {
         pingpong: build_if(any(&[Group::Messages, Group::Frames, Group::Rp]), programs.join("pingpong"))?,
         coldstart: build_if(wanted(Group::Coldstart), programs.join("coldstart"))?,
         movelegs: build_if(wanted(Group::Frames), repo.join("testdata/programs/movelegs"))?,
         jitter: build_if(wanted(Group::Jitter), programs.join("sensorjitter"))?,
-        camhead: if wanted(Group::Camera) { camera::camera_head_ms(&movehead, &camwatch, work)? } else { PathBuf::new() },
+        camsweep: if wanted(Group::Camera) { camera::with_camwatch(&headsweep, &camwatch, work, "camsweep")? } else { PathBuf::new() },
         camwatch,
-        movehead,
+        headsweep,
     };
     let mut report = Report::default();
     for round in 0..runs.max(1) {
@@ -216,7 +216,7 @@ fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, wante
     if wanted(Group::Coldstart) {
         coldstart(exe, root, b, tab)?;
     }
-    let programs = camera::Programs { camwatch: &b.camwatch, movehead: &b.movehead, camhead: &b.camhead, movelegs: &b.movelegs };
+    let programs = camera::Programs { camwatch: &b.camwatch, headsweep: &b.headsweep, camsweep: &b.camsweep, movelegs: &b.movelegs };
     if wanted(Group::Frames) {
         camera::frames(exe, root, &programs, tab, RAW_P50)?;
         model::model(tab, "movelegs: host time per 8 ms frame at --speed max (start-up taken off)");
