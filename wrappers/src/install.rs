@@ -97,6 +97,7 @@ pub fn install(prefix: &Path, exe: &Path) -> Result<Outcome, Error> {
         return Err(Error::usage(format!("{} exists and is not a cargo-openr SDK root; choose a new or empty directory", prefix.display())));
     }
     let name = prefix.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "sdk".into());
+    remove_leftovers(parent, &name);
     let staging = parent.join(format!(".{name}.partial-{}", std::process::id()));
     let result = build_tree(&staging, prefix, &exe_bytes, &stamp).and_then(|()| swap_in(&staging, prefix));
     if result.is_err() {
@@ -146,6 +147,21 @@ fn payload_hash(exe: &[u8]) -> String {
     let mut h = DefaultHasher::new();
     exe.hash(&mut h);
     format!("{}-{:016x}", env!("CARGO_PKG_VERSION"), h.finish())
+}
+
+/// Removes what an install into `parent/name` that was killed half-way left behind
+/// (its staging tree, the previous root it was swapping out). Installs into one prefix
+/// are serialised by its lock, which the caller holds: none of these is in use.
+fn remove_leftovers(parent: &Path, name: &str) {
+    let partial = format!(".{name}.partial-");
+    let Ok(entries) = fs::read_dir(parent) else { return };
+    for e in entries.flatten() {
+        let file = e.file_name();
+        let file = file.to_string_lossy();
+        if file.starts_with(&partial) || file == format!(".{name}.old") {
+            let _ = fs::remove_dir_all(e.path());
+        }
+    }
 }
 
 fn swap_in(staging: &Path, prefix: &Path) -> Result<(), Error> {
@@ -219,6 +235,26 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_install_killed_half_way_does_not_block_the_next() {
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path();
+        for left in [".sdk.old", ".sdk.partial-4242", ".other.old"] {
+            fs::create_dir_all(p.join(left).join("OPEN_R")).unwrap();
+        }
+        fs::create_dir_all(p.join("sdk")).unwrap();
+        fs::write(p.join("sdk/STAMP"), b"old root").unwrap();
+        remove_leftovers(p, "sdk");
+        let staging = p.join(format!(".sdk.partial-{}", std::process::id()));
+        fs::create_dir_all(&staging).unwrap();
+        fs::write(staging.join("STAMP"), b"new root").unwrap();
+        swap_in(&staging, &p.join("sdk")).unwrap();
+        assert_eq!(fs::read(p.join("sdk/STAMP")).unwrap(), b"new root");
+        let mut left: Vec<_> = fs::read_dir(p).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+        left.sort();
+        assert_eq!(left, [".other.old", "sdk"], "another prefix's files are not touched");
+    }
 
     #[test]
     fn a_failed_atomic_write_names_the_file_and_leaves_nothing_behind() {
