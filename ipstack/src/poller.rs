@@ -1,0 +1,151 @@
+//! The poll thread's epoll set. Each host socket is added once, edge-triggered, with the
+//! events some operation has waited for so far (its "armed" mask, kept beside the socket);
+//! it is modified only when an operation needs an event the mask lacks, and never disarmed
+//! (closing the socket takes it out of the set). Edge-triggered is sound here because
+//! every operation is first tried on the caller's thread and parks only after the socket
+//! said EAGAIN (or a short read, which drains a stream socket): the next change of the
+//! socket is then an edge the poll thread sees.
+use std::io;
+use std::os::fd::{AsRawFd, FromRawFd, OwnedFd, RawFd};
+
+use super::sys;
+use super::EndpointId;
+
+/// What an epoll event is for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Token {
+    /// The eventfd that makes the poll thread look at its timeout again.
+    Wake,
+    /// A listening socket, by its host (address, port).
+    Listener((u32, u16)),
+    /// An endpoint's socket.
+    Ep(EndpointId),
+}
+
+const WAKE: u64 = u64::MAX;
+const LISTENER: u64 = 1 << 62;
+
+impl Token {
+    fn encode(self) -> u64 {
+        match self {
+            Token::Wake => WAKE,
+            Token::Listener((addr, port)) => LISTENER | u64::from(addr) << 16 | u64::from(port),
+            Token::Ep(id) => u64::from(id.0),
+        }
+    }
+
+    pub fn decode(v: u64) -> Token {
+        if v == WAKE {
+            Token::Wake
+        } else if v & LISTENER != 0 {
+            Token::Listener(((v >> 16) as u32, v as u16))
+        } else {
+            Token::Ep(EndpointId(v as u32))
+        }
+    }
+}
+
+/// Readable (a Receive, a Listen waits).
+pub const IN: u32 = libc::EPOLLIN as u32;
+/// Writable (a Send or a Connect waits).
+pub const OUT: u32 = libc::EPOLLOUT as u32;
+
+pub struct Poller {
+    ep: OwnedFd,
+    wake: OwnedFd,
+}
+
+impl Poller {
+    pub fn new() -> io::Result<Poller> {
+        // SAFETY: plain syscall; a fresh descriptor we own.
+        let ep = unsafe { libc::epoll_create1(libc::EPOLL_CLOEXEC) };
+        if ep < 0 {
+            return Err(io::Error::last_os_error());
+        }
+        // SAFETY: `ep` is the fresh epoll descriptor just created (checked non-negative).
+        let ep = unsafe { OwnedFd::from_raw_fd(ep) };
+        // SAFETY: plain syscall; a fresh descriptor we own.
+        let wake = unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) };
+        if wake < 0 {
+            return Err(io::Error::last_os_error());
+        }
+        // SAFETY: `wake` is the fresh eventfd just created (checked non-negative).
+        let wake = unsafe { OwnedFd::from_raw_fd(wake) };
+        let poller = Poller { ep, wake };
+        // Level-triggered: it stays readable until drained.
+        poller.ctl(libc::EPOLL_CTL_ADD, poller.wake.as_raw_fd(), IN, Token::Wake).map_err(io::Error::from_raw_os_error)?;
+        Ok(poller)
+    }
+
+    fn ctl(&self, op: libc::c_int, fd: RawFd, events: u32, token: Token) -> Result<(), i32> {
+        let mut ev = libc::epoll_event { events, u64: token.encode() };
+        // SAFETY: `ev` is a live local the kernel only reads.
+        if unsafe { libc::epoll_ctl(self.ep.as_raw_fd(), op, fd, &mut ev) } < 0 {
+            Err(sys::errno())
+        } else {
+            Ok(())
+        }
+    }
+
+    /// Makes `fd` report `want` too (edge-triggered), unless `armed` (what it reports
+    /// already; 0 = not in the set) has it; `armed` is updated. An errno other than
+    /// EEXIST/ENOENT (which only say the set and `armed` disagreed, and are mended by the
+    /// other operation) is returned: the caller must fail what waits on the socket.
+    pub fn arm(&self, fd: RawFd, token: Token, armed: &mut u32, want: u32) -> Result<(), i32> {
+        if want & !*armed == 0 {
+            return Ok(());
+        }
+        let events = *armed | want;
+        let flags = events | libc::EPOLLET as u32;
+        let (first, second) = if *armed == 0 { (libc::EPOLL_CTL_ADD, libc::EPOLL_CTL_MOD) } else { (libc::EPOLL_CTL_MOD, libc::EPOLL_CTL_ADD) };
+        match self.ctl(first, fd, flags, token) {
+            Err(libc::EEXIST | libc::ENOENT) => self.ctl(second, fd, flags, token)?,
+            r => r?,
+        }
+        *armed = events;
+        Ok(())
+    }
+
+    /// Waits up to `timeout` ms (-1: no limit) and fills `events`; Err(errno) on failure
+    /// (EINTR included).
+    pub fn wait(&self, events: &mut [libc::epoll_event], timeout: i32) -> Result<usize, i32> {
+        // SAFETY: `events` is a live array of `events.len()` entries the kernel may fill.
+        let n = unsafe { libc::epoll_wait(self.ep.as_raw_fd(), events.as_mut_ptr(), events.len() as i32, timeout) };
+        if n < 0 {
+            Err(sys::errno())
+        } else {
+            Ok(n as usize)
+        }
+    }
+
+    /// Makes the poll thread recompute its timeout (a delayed reply became due earlier).
+    pub fn wake(&self) {
+        let one: u64 = 1;
+        // SAFETY: writes 8 bytes from `one`.
+        unsafe { libc::write(self.wake.as_raw_fd(), (&one as *const u64).cast(), 8) };
+    }
+
+    pub fn drain_wake(&self) {
+        let mut v: u64 = 0;
+        // SAFETY: reads 8 bytes into `v`.
+        unsafe { libc::read(self.wake.as_raw_fd(), (&mut v as *mut u64).cast(), 8) };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tokens_round_trip() {
+        for t in [
+            Token::Wake,
+            Token::Listener((0x7f00_0001, 54321)),
+            Token::Listener((u32::MAX, u16::MAX)),
+            Token::Ep(EndpointId(7)),
+            Token::Ep(EndpointId(u32::MAX)),
+        ] {
+            assert_eq!(Token::decode(t.encode()), t);
+        }
+    }
+}
