@@ -1,10 +1,15 @@
-//! The poll thread's epoll set. Each host socket is added once, edge-triggered, with the
-//! events some operation has waited for so far (its "armed" mask, kept beside the socket);
-//! it is modified only when an operation needs an event the mask lacks, and never disarmed
-//! (closing the socket takes it out of the set). Edge-triggered is sound here because
-//! every operation is first tried on the caller's thread and parks only after the socket
-//! said EAGAIN (or a short read, which drains a stream socket): the next change of the
-//! socket is then an edge the poll thread sees.
+//! The poll thread's epoll set. An endpoint's socket is armed one-shot, only when an
+//! operation parks on it (it was tried at once on the caller's thread and would block),
+//! for the events the parked operations need; an event disarms it, and the poll thread
+//! re-arms it only if something still waits after it made progress. A socket whose
+//! operations finish at once (an echo whose data is already there, a stream of Sends the
+//! socket takes) costs no epoll call and never wakes the poll thread. Each endpoint keeps
+//! an [`Armed`] record beside its socket, so a socket already armed for what is needed is
+//! left alone. Arming polls the socket's state, so readiness that came between the
+//! caller's EAGAIN and the arming is not lost.
+//!
+//! A listening socket is added once, edge-triggered: connections that come while no
+//! Listen waits stay queued and are accepted by the next Listen at once.
 use std::io;
 use std::os::fd::{AsRawFd, FromRawFd, OwnedFd, RawFd};
 
@@ -42,6 +47,22 @@ impl Token {
         } else {
             Token::Ep(EndpointId(v as u32))
         }
+    }
+}
+
+/// Whether and for what an endpoint's socket is armed.
+#[derive(Default, Clone, Copy)]
+pub struct Armed {
+    /// The socket is in the epoll set (arming it again is a modification).
+    in_set: bool,
+    /// The events it will report once (0: disarmed).
+    events: u32,
+}
+
+impl Armed {
+    /// Its event came: the kernel disarmed it (one-shot).
+    pub fn fired(&mut self) {
+        self.events = 0;
     }
 }
 
@@ -87,22 +108,27 @@ impl Poller {
         }
     }
 
-    /// Makes `fd` report `want` too (edge-triggered), unless `armed` (what it reports
-    /// already; 0 = not in the set) has it; `armed` is updated. An errno other than
-    /// EEXIST/ENOENT (which only say the set and `armed` disagreed, and are mended by the
-    /// other operation) is returned: the caller must fail what waits on the socket.
-    pub fn arm(&self, fd: RawFd, token: Token, armed: &mut u32, want: u32) -> Result<(), i32> {
-        if want & !*armed == 0 {
+    /// Adds a listening socket, readable edge-triggered, for good.
+    pub fn add_listener(&self, fd: RawFd, key: (u32, u16)) -> Result<(), i32> {
+        self.ctl(libc::EPOLL_CTL_ADD, fd, IN | libc::EPOLLET as u32, Token::Listener(key))
+    }
+
+    /// Arms `fd` to report `want` once (with what `armed` has already), unless it is
+    /// armed for that already. An errno other than EEXIST/ENOENT (which only say the set
+    /// and `armed` disagreed, and are mended by the other operation) is returned: the
+    /// caller must fail what waits on the socket.
+    pub fn arm(&self, fd: RawFd, token: Token, armed: &mut Armed, want: u32) -> Result<(), i32> {
+        if want & !armed.events == 0 {
             return Ok(());
         }
-        let events = *armed | want;
-        let flags = events | libc::EPOLLET as u32;
-        let (first, second) = if *armed == 0 { (libc::EPOLL_CTL_ADD, libc::EPOLL_CTL_MOD) } else { (libc::EPOLL_CTL_MOD, libc::EPOLL_CTL_ADD) };
+        let events = armed.events | want;
+        let flags = events | libc::EPOLLONESHOT as u32;
+        let (first, second) = if armed.in_set { (libc::EPOLL_CTL_MOD, libc::EPOLL_CTL_ADD) } else { (libc::EPOLL_CTL_ADD, libc::EPOLL_CTL_MOD) };
         match self.ctl(first, fd, flags, token) {
             Err(libc::EEXIST | libc::ENOENT) => self.ctl(second, fd, flags, token)?,
             r => r?,
         }
-        *armed = events;
+        *armed = Armed { in_set: true, events };
         Ok(())
     }
 

@@ -308,8 +308,8 @@ pub fn poll_loop(net: &'static Net) {
                 Token::Wake => net.poller.drain_wake(),
                 Token::Listener(key) => super::tcp::accept_ready(&mut st, &net.config, key),
                 Token::Ep(id) => match st.eps.get(&id) {
-                    Some(Endpoint::Tcp(_)) => super::tcp::progress(&mut st, id),
-                    Some(Endpoint::Udp(_)) => super::udp::progress(&mut st, &net.config, id),
+                    Some(Endpoint::Tcp(_)) => super::tcp::on_event(&mut st, id),
+                    Some(Endpoint::Udp(_)) => super::udp::on_event(&mut st, &net.config, id),
                     _ => {}
                 },
             }

@@ -6,7 +6,7 @@ use std::time::{Duration, Instant};
 
 use super::codes::{op, tcp, tcp_error, PROTO_TCP};
 use super::config::NetConfig;
-use super::poller::{self, Poller, Token};
+use super::poller::{self, Armed, Poller, Token};
 use super::stack::{robot_peer, tcp_in, Endpoint, State};
 use super::{sys, EndpointId, NetResult, Pending};
 
@@ -42,8 +42,8 @@ struct RecvOp {
 pub struct TcpEp {
     phase: TcpPhase,
     fd: Option<OwnedFd>,
-    /// The events `fd` is armed for in the poll thread's epoll set (0: not in it).
-    armed: u32,
+    /// Whether `fd` is armed in the poll thread's epoll set, and for what.
+    armed: Armed,
     nonblocking: bool,
     /// Bind op: local (robot address, robot port) for a later Listen/Connect.
     bound: Option<(u32, u16)>,
@@ -85,7 +85,7 @@ impl TcpEp {
     /// A new socket (or none): not in the epoll set yet.
     fn attach(&mut self, fd: Option<OwnedFd>) {
         self.fd = fd;
-        self.armed = 0;
+        self.armed = Armed::default();
     }
 
     /// Answers a failed Listen once its delay is over; the endpoint may listen again.
@@ -220,7 +220,7 @@ fn shared_listener(listeners: &mut HashMap<(u32, u16), Listener>, poller: &Polle
     let key = (addr, sys::local_addr(fd.as_raw_fd()).1);
     // Armed once: connections that come while no Listen waits stay queued for the next
     // Listen, which accepts at once (`accept_ready`).
-    if let Err(e) = poller.arm(fd.as_raw_fd(), Token::Listener(key), &mut 0, poller::IN) {
+    if let Err(e) = poller.add_listener(fd.as_raw_fd(), key) {
         cfg.report.warn(&format!("net: cannot watch a listening socket (epoll_ctl: {})", std::io::Error::from_raw_os_error(e)));
         return Err(tcp::FAIL);
     }
@@ -377,6 +377,14 @@ fn address(t: &mut TcpEp, cfg: &NetConfig, p: Pending) {
     p.complete(r)
 }
 
+/// The socket of endpoint `id` reported readiness (and is disarmed): progress.
+pub(super) fn on_event(st: &mut State, id: EndpointId) {
+    if let Some(t) = st.tcp(id) {
+        t.armed.fired();
+    }
+    progress(st, id);
+}
+
 /// Advances everything pending on a TCP endpoint without blocking, then arms its socket
 /// for what still waits.
 pub(super) fn progress(st: &mut State, id: EndpointId) {
@@ -519,8 +527,8 @@ fn pull_receive(t: &mut TcpEp, fd: RawFd) {
                 Ok(n) => {
                     r.got += n;
                     // A short read emptied the socket: the Receive completes without the
-                    // read that would say EAGAIN. Below min it reads on, to EAGAIN or EOF
-                    // (a FIN queued behind the data makes no new edge).
+                    // read that would say EAGAIN. Below min it reads on, to EAGAIN or EOF:
+                    // a FIN queued behind the data is then seen now, not after a wait.
                     if n < want && r.got >= r.min {
                         break;
                     }

@@ -4,15 +4,15 @@ use std::os::fd::{AsRawFd, OwnedFd};
 
 use super::codes::{op, udp, udp_error, PROTO_UDP};
 use super::config::NetConfig;
-use super::poller::{self, Token};
+use super::poller::{self, Armed, Token};
 use super::stack::{robot_peer, Endpoint, State};
 use super::{sys, EndpointId, NetResult, Pending};
 
 #[derive(Default)]
 pub struct UdpEp {
     fd: Option<OwnedFd>,
-    /// The events `fd` is armed for in the poll thread's epoll set (0: not in it).
-    armed: u32,
+    /// Whether `fd` is armed in the poll thread's epoll set, and for what.
+    armed: Armed,
     robot_lport: u16,
     connected: bool,
     nonblocking: bool,
@@ -179,6 +179,14 @@ fn address(u: &mut UdpEp, cfg: &NetConfig, p: Pending) {
         (r.faddr, r.fport) = robot_peer(cfg, fa, fp);
     }
     p.complete(r)
+}
+
+/// The socket of endpoint `id` reported readiness (and is disarmed): progress.
+pub(super) fn on_event(st: &mut State, cfg: &NetConfig, id: EndpointId) {
+    if let Some(u) = st.udp(id) {
+        u.armed.fired();
+    }
+    progress(st, cfg, id);
 }
 
 /// Sends and receives what the socket allows without blocking, then arms the socket for
