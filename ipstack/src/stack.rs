@@ -2,6 +2,7 @@
 //! creation, the robot's settings registry, the entry point of every request, and the poll
 //! thread that finishes what would block.
 use std::collections::{BTreeMap, HashMap};
+use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -31,6 +32,30 @@ impl Endpoint {
     }
 }
 
+/// Endpoint ids are numbers the stack hands out in sequence: a multiplicative hash spreads
+/// them well enough, without SipHash's cost on every request (and every
+/// `endpoint_protocol` query) of a streaming object.
+#[derive(Default)]
+pub struct IdHasher(u64);
+
+const GOLDEN: u64 = 0x9e37_79b9_7f4a_7c15;
+
+impl Hasher for IdHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0.rotate_left(8) ^ u64::from(b)).wrapping_mul(GOLDEN);
+        }
+    }
+    fn write_u32(&mut self, n: u32) {
+        self.0 = (self.0 ^ u64::from(n)).wrapping_mul(GOLDEN);
+    }
+}
+
+pub(super) type IdMap<V> = HashMap<EndpointId, V, BuildHasherDefault<IdHasher>>;
+
 #[derive(Clone)]
 enum RegValue {
     Str(String),
@@ -39,9 +64,9 @@ enum RegValue {
 
 pub struct State {
     next_id: u32,
-    pub(super) eps: HashMap<EndpointId, Endpoint>,
+    pub(super) eps: IdMap<Endpoint>,
     /// Protocols of closed endpoints, so late messages get that protocol's CLOSED code.
-    tombstones: HashMap<EndpointId, i32>,
+    tombstones: IdMap<i32>,
     pub(super) listeners: HashMap<(u32, u16), Listener>,
     /// Live shared buffers: region id → (base, size).
     buffers: BTreeMap<u32, (usize, usize)>,
@@ -59,7 +84,7 @@ pub struct State {
 
 /// The TCP endpoint `id` of a table (a borrow of the table alone, so that the rest of
 /// [`State`] stays usable beside it).
-pub(super) fn tcp_in(eps: &mut HashMap<EndpointId, Endpoint>, id: EndpointId) -> Option<&mut TcpEp> {
+pub(super) fn tcp_in(eps: &mut IdMap<Endpoint>, id: EndpointId) -> Option<&mut TcpEp> {
     match eps.get_mut(&id) {
         Some(Endpoint::Tcp(t)) => Some(t),
         _ => None,
@@ -70,8 +95,8 @@ impl State {
     pub fn new(host: Arc<dyn Host>, poller: &'static Poller) -> State {
         State {
             next_id: 1,
-            eps: HashMap::new(),
-            tombstones: HashMap::new(),
+            eps: IdMap::default(),
+            tombstones: IdMap::default(),
             listeners: HashMap::new(),
             buffers: BTreeMap::new(),
             next_region: 1,
