@@ -317,12 +317,16 @@ pub fn poll_loop(net: &'static Net) {
     // SAFETY: all-zero is a valid epoll_event (plain data).
     let mut events = vec![unsafe { std::mem::zeroed::<libc::epoll_event>() }; 64];
     let mut timeout = -1;
+    let mut warned = false;
     loop {
         let n = match net.poller.wait(&mut events, timeout) {
             Ok(n) => n,
             Err(libc::EINTR) => 0,
             Err(e) => {
-                net.host.warn(&format!("net: the poll thread's epoll_wait failed: {}", std::io::Error::from_raw_os_error(e)));
+                // Said once: it would repeat every pause, and parked operations stall.
+                if !std::mem::replace(&mut warned, true) {
+                    net.host.warn(&format!("net: the poll thread's epoll_wait failed: {}", std::io::Error::from_raw_os_error(e)));
+                }
                 std::thread::sleep(Duration::from_millis(100));
                 0
             }

@@ -1,6 +1,6 @@
 //! UDP endpoints (network-api 4): Bind, Connect, Send, Receive and Close on host datagram
 //! sockets; a Send or Receive that would block waits for the poll thread.
-use std::os::fd::{AsRawFd, OwnedFd};
+use std::os::fd::{AsRawFd, OwnedFd, RawFd};
 
 use super::codes::{op, udp, udp_error, PROTO_UDP};
 use super::config::NetConfig;
@@ -207,7 +207,7 @@ pub(super) fn progress(st: &mut State, cfg: &NetConfig, id: EndpointId) {
     st.host.warn(&format!("net: cannot watch the socket of UDP endpoint {} (epoll_ctl: {})", id.0, std::io::Error::from_raw_os_error(e)));
 }
 
-fn advance(u: &mut UdpEp, cfg: &NetConfig, fd: std::os::fd::RawFd) {
+fn advance(u: &mut UdpEp, cfg: &NetConfig, fd: RawFd) {
     if let Some((_, buf, size, to)) = u.send.as_ref() {
         // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`), and the IPStack refuses to destroy a buffer while an operation on it is pending (ENV_DESTROY_BUFFER).
         let code = match unsafe { sys::sendto(fd, *buf as *const u8, *size, *to) } {
