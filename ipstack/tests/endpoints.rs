@@ -240,8 +240,9 @@ fn pattern(i: usize, len: usize) -> Vec<u8> {
 
 /// An echo object on the stack serving many clients at once: Listen, then Receive → Send
 /// the bytes back → Receive …, Close on CLOSED. Every client gets its own bytes back, in
-/// order; clients write in odd-sized pieces (short reads) and read only when they like
-/// (Sends wait for the socket to take them).
+/// order. Clients write in odd-sized pieces from a thread of their own, so Receives
+/// both find data waiting (done at once, short reads) and park until it comes (the poll
+/// thread's readable path), on sixteen sockets at once.
 #[test]
 fn many_concurrent_connections_each_get_their_own_bytes_back() {
     const CLIENTS: usize = 16;
