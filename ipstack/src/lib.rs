@@ -5,7 +5,8 @@
 //! (`sdk-payload/cxx/openr_net.h`), never through the object message loop: libantMCOOP
 //! decodes each ANT message into a flat [`Request`] and hands over a copy of the whole
 //! message plus an `encode` function. Requests are tried at once on the caller's thread
-//! (non-blocking syscalls); what would block is parked and finished by one poll thread;
+//! (non-blocking syscalls); what would block is parked and finished by one poll thread
+//! (epoll, woken only by the sockets that parked operations wait on);
 //! DNS lookups run on worker threads. Replies are encoded into the message copy and
 //! handed to [`Host::send`] for the object's (oid, selector), so objects only ever run
 //! them from their own message loop. Every completion happens under one lock, which
@@ -20,17 +21,18 @@
 mod codes;
 pub mod config;
 pub mod dns;
+mod poller;
 mod stack;
 mod sys;
 mod tcp;
 mod udp;
 
 use std::ffi::{c_char, c_void, CStr};
-use std::os::fd::{AsRawFd, FromRawFd, OwnedFd};
 use std::sync::mpsc;
 use std::sync::{Arc, Mutex};
 
 pub use config::{NetConfig, NetOptions};
+use poller::Poller;
 use stack::State;
 
 /// `struct openr_net_request` / `openr_net_result` (openr-sys).
@@ -113,26 +115,20 @@ pub struct Net {
     config: NetConfig,
     host: Arc<dyn Host>,
     trace: bool,
-    wake_fd: OwnedFd,
+    poller: &'static Poller,
 }
 
 impl Net {
     /// Starts a stack and its poll thread; both live for the rest of the process (a
     /// runtime starts one, on an object's first request).
     pub fn start(opts: &NetOptions, host: Arc<dyn Host>) -> std::io::Result<&'static Net> {
-        // SAFETY: plain syscall; a fresh descriptor we own.
-        let fd = unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) };
-        if fd < 0 {
-            return Err(std::io::Error::last_os_error());
-        }
-        // SAFETY: `fd` is the fresh eventfd just created (checked non-negative), owned by nothing else.
-        let wake_fd = unsafe { OwnedFd::from_raw_fd(fd) };
+        let poller: &'static Poller = Box::leak(Box::new(Poller::new()?));
         let net: &'static Net = Box::leak(Box::new(Net {
-            state: Mutex::new(State::new(host.clone())),
+            state: Mutex::new(State::new(host.clone(), poller)),
             config: NetConfig::new(opts, host.clone()),
             host,
             trace: opts.trace,
-            wake_fd,
+            poller,
         }));
         std::thread::Builder::new().name("ipstack".into()).spawn(move || stack::poll_loop(net))?;
         Ok(net)
@@ -140,19 +136,6 @@ impl Net {
 
     fn lock(&self) -> std::sync::MutexGuard<'_, State> {
         self.state.lock().unwrap_or_else(|p| p.into_inner())
-    }
-
-    /// Makes the poll thread rebuild its descriptor set.
-    fn wake(&self) {
-        let one: u64 = 1;
-        // SAFETY: writes 8 bytes from `one`.
-        unsafe { libc::write(self.wake_fd.as_raw_fd(), (&one as *const u64).cast(), 8) };
-    }
-
-    fn drain_wake(&self) {
-        let mut v: u64 = 0;
-        // SAFETY: reads 8 bytes into `v`.
-        unsafe { libc::read(self.wake_fd.as_raw_fd(), (&mut v as *mut u64).cast(), 8) };
     }
 
     /// The protocol of an endpoint (`OPENR_NET_TCP`…), a closed one's too; -1 if unknown.

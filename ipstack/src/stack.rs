@@ -2,15 +2,16 @@
 //! creation, the robot's settings registry, the entry point of every request, and the poll
 //! thread that finishes what would block.
 use std::collections::{BTreeMap, HashMap};
-use std::os::fd::AsRawFd;
+use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use super::codes::{ant, op, tcp, PROTO_DNS, PROTO_ENV, PROTO_INIT, PROTO_TCP, PROTO_UDP};
 use super::config::{self, NetConfig};
+use super::poller::{Poller, Token};
 use super::tcp::{Listener, TcpEp};
 use super::udp::UdpEp;
-use super::{dns, sys, EndpointId, Host, Net, NetResult, Pending};
+use super::{dns, EndpointId, Host, Net, NetResult, Pending};
 
 /// `antModuleRef.module` of every endpoint (never null: null means the environment).
 const MODULE_MAGIC: usize = 0x414e_5400;
@@ -31,6 +32,30 @@ impl Endpoint {
     }
 }
 
+/// Endpoint ids are numbers the stack hands out in sequence: a multiplicative hash spreads
+/// them well enough, without SipHash's cost on every request (and every
+/// `endpoint_protocol` query) of a streaming object.
+#[derive(Default)]
+pub struct IdHasher(u64);
+
+const GOLDEN: u64 = 0x9e37_79b9_7f4a_7c15;
+
+impl Hasher for IdHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0.rotate_left(8) ^ u64::from(b)).wrapping_mul(GOLDEN);
+        }
+    }
+    fn write_u32(&mut self, n: u32) {
+        self.0 = (self.0 ^ u64::from(n)).wrapping_mul(GOLDEN);
+    }
+}
+
+pub(super) type IdMap<V> = HashMap<EndpointId, V, BuildHasherDefault<IdHasher>>;
+
 #[derive(Clone)]
 enum RegValue {
     Str(String),
@@ -39,9 +64,9 @@ enum RegValue {
 
 pub struct State {
     next_id: u32,
-    pub(super) eps: HashMap<EndpointId, Endpoint>,
+    pub(super) eps: IdMap<Endpoint>,
     /// Protocols of closed endpoints, so late messages get that protocol's CLOSED code.
-    tombstones: HashMap<EndpointId, i32>,
+    tombstones: IdMap<i32>,
     pub(super) listeners: HashMap<(u32, u16), Listener>,
     /// Live shared buffers: region id → (base, size).
     buffers: BTreeMap<u32, (usize, usize)>,
@@ -50,31 +75,28 @@ pub struct State {
     pub dns_servers: Option<Vec<u32>>,
     pub domain: Option<String>,
     /// Where the robot's settings files are and warnings go.
-    host: Arc<dyn Host>,
+    pub(super) host: Arc<dyn Host>,
+    /// The poll thread's epoll set, which parked operations arm their sockets in.
+    pub(super) poller: &'static Poller,
+    /// The earliest delayed Listen error (may be stale: an early wake-up is harmless).
+    next_deadline: Option<Instant>,
 }
 
 /// The TCP endpoint `id` of a table (a borrow of the table alone, so that the rest of
 /// [`State`] stays usable beside it).
-pub(super) fn tcp_in(eps: &mut HashMap<EndpointId, Endpoint>, id: EndpointId) -> Option<&mut TcpEp> {
+pub(super) fn tcp_in(eps: &mut IdMap<Endpoint>, id: EndpointId) -> Option<&mut TcpEp> {
     match eps.get_mut(&id) {
         Some(Endpoint::Tcp(t)) => Some(t),
         _ => None,
     }
 }
 
-/// What the poll thread watches.
-#[derive(Clone, Copy)]
-enum Token {
-    Listener((u32, u16)),
-    Ep(EndpointId),
-}
-
 impl State {
-    pub fn new(host: Arc<dyn Host>) -> State {
+    pub fn new(host: Arc<dyn Host>, poller: &'static Poller) -> State {
         State {
             next_id: 1,
-            eps: HashMap::new(),
-            tombstones: HashMap::new(),
+            eps: IdMap::default(),
+            tombstones: IdMap::default(),
             listeners: HashMap::new(),
             buffers: BTreeMap::new(),
             next_region: 1,
@@ -82,6 +104,8 @@ impl State {
             dns_servers: None,
             domain: None,
             host,
+            poller,
+            next_deadline: None,
         }
     }
 
@@ -150,44 +174,29 @@ impl State {
         }
     }
 
-    fn poll_set(&self) -> (Vec<libc::pollfd>, Vec<Token>, Option<Instant>) {
-        let mut fds = Vec::new();
-        let mut toks = Vec::new();
-        let mut deadline: Option<Instant> = None;
-        for (key, l) in &self.listeners {
-            if let Some(fd) = l.poll_fd() {
-                fds.push(libc::pollfd { fd, events: libc::POLLIN, revents: 0 });
-                toks.push(Token::Listener(*key));
-            }
+    /// Makes the poll thread wake by `at` (a delayed Listen error).
+    pub(super) fn schedule(&mut self, at: Instant) {
+        if self.next_deadline.is_none_or(|d| at < d) {
+            self.next_deadline = Some(at);
+            self.poller.wake();
         }
-        for (&id, ep) in &self.eps {
-            let (fd, ev) = match ep {
-                Endpoint::Tcp(t) => {
-                    let (fd, ev, due) = t.interest();
-                    if let Some(at) = due {
-                        deadline = Some(deadline.map_or(at, |d| d.min(at)));
-                    }
-                    (fd, ev)
-                }
-                Endpoint::Udp(u) => u.interest(),
-                Endpoint::Dns(_) => (None, 0),
-            };
-            if let (Some(fd), true) = (fd, ev != 0) {
-                fds.push(libc::pollfd { fd, events: ev, revents: 0 });
-                toks.push(Token::Ep(id));
-            }
-        }
-        (fds, toks, deadline)
     }
 
-    /// Answers the failed Listens whose delay is over.
-    fn fire_delayed(&mut self) {
+    /// Answers the failed Listens whose delay is over; the poll thread's next timeout.
+    fn fire_delayed(&mut self) -> Option<Instant> {
         let now = Instant::now();
-        for ep in self.eps.values_mut() {
-            if let Endpoint::Tcp(t) = ep {
-                t.fire_listen_error(now);
+        if self.next_deadline.is_some_and(|d| d <= now) {
+            self.next_deadline = None;
+            for ep in self.eps.values_mut() {
+                if let Endpoint::Tcp(t) = ep {
+                    t.fire_listen_error(now);
+                    if let Some(at) = t.listen_due() {
+                        self.next_deadline = Some(self.next_deadline.map_or(at, |d| d.min(at)));
+                    }
+                }
             }
         }
+        self.next_deadline
     }
 }
 
@@ -204,8 +213,6 @@ pub fn handle(net: &'static Net, p: Pending) {
         // an endpoint that never existed: CLOSED is 2 in both TCP and UDP numbering
         _ => p.fail(tcp::CONNECTION_CLOSED),
     }
-    drop(st);
-    net.wake();
 }
 
 fn init_op(st: &mut State, p: Pending) {
@@ -307,37 +314,36 @@ fn env_op(st: &mut State, p: Pending) {
 // ---------------------------------------------------------------- poll thread
 
 pub fn poll_loop(net: &'static Net) {
+    // SAFETY: all-zero is a valid epoll_event (plain data).
+    let mut events = vec![unsafe { std::mem::zeroed::<libc::epoll_event>() }; 64];
+    let mut timeout = -1;
+    let mut warned = false;
     loop {
-        let (mut fds, toks, deadline) = net.lock().poll_set();
-        fds.push(libc::pollfd { fd: net.wake_fd.as_raw_fd(), events: libc::POLLIN, revents: 0 });
-        let timeout = deadline.map_or(-1, |d| d.saturating_duration_since(Instant::now()).as_millis().min(60_000) as i32 + 1);
-        // SAFETY: `fds` is a valid array of pollfd.
-        let n = unsafe { libc::poll(fds.as_mut_ptr(), fds.len() as libc::nfds_t, timeout) };
-        if n < 0 {
-            if sys::errno() == libc::EINTR {
-                continue;
+        let n = match net.poller.wait(&mut events, timeout) {
+            Ok(n) => n,
+            Err(libc::EINTR) => 0,
+            Err(e) => {
+                // Said once: it would repeat every pause, and parked operations stall.
+                if !std::mem::replace(&mut warned, true) {
+                    net.host.warn(&format!("net: the poll thread's epoll_wait failed: {}", std::io::Error::from_raw_os_error(e)));
+                }
+                std::thread::sleep(Duration::from_millis(100));
+                0
             }
-            std::thread::sleep(Duration::from_millis(10));
-            continue;
-        }
-        if fds.last().is_some_and(|w| w.revents != 0) {
-            net.drain_wake();
-        }
+        };
         let mut st = net.lock();
-        for (pfd, tok) in fds.iter().zip(toks.iter()) {
-            if pfd.revents == 0 {
-                continue;
-            }
-            match *tok {
+        for ev in &events[..n] {
+            match Token::decode(ev.u64) {
+                Token::Wake => net.poller.drain_wake(),
                 Token::Listener(key) => super::tcp::accept_ready(&mut st, &net.config, key),
-                Token::Ep(id) => match st.eps.get_mut(&id) {
-                    Some(Endpoint::Tcp(_)) => super::tcp::progress(&mut st, id),
-                    Some(Endpoint::Udp(u)) => super::udp::progress(u, &net.config),
+                Token::Ep(id) => match st.eps.get(&id) {
+                    Some(Endpoint::Tcp(_)) => super::tcp::on_event(&mut st, id),
+                    Some(Endpoint::Udp(_)) => super::udp::on_event(&mut st, &net.config, id),
                     _ => {}
                 },
             }
         }
-        st.fire_delayed();
+        timeout = st.fire_delayed().map_or(-1, |d| d.saturating_duration_since(Instant::now()).as_millis().min(60_000) as i32 + 1);
     }
 }
 

@@ -6,6 +6,7 @@ use std::time::{Duration, Instant};
 
 use super::codes::{op, tcp, tcp_error, PROTO_TCP};
 use super::config::NetConfig;
+use super::poller::{self, Armed, Poller, Token};
 use super::stack::{robot_peer, tcp_in, Endpoint, State};
 use super::{sys, EndpointId, NetResult, Pending};
 
@@ -41,6 +42,8 @@ struct RecvOp {
 pub struct TcpEp {
     phase: TcpPhase,
     fd: Option<OwnedFd>,
+    /// Whether `fd` is armed in the poll thread's epoll set, and for what.
+    armed: Armed,
     nonblocking: bool,
     /// Bind op: local (robot address, robot port) for a later Listen/Connect.
     bound: Option<(u32, u16)>,
@@ -60,7 +63,8 @@ pub struct TcpEp {
     sticky: Option<i32>,
 }
 
-/// A host listening socket, shared by every Listen endpoint on its (address, port).
+/// A host listening socket, shared by every Listen endpoint on its (address, port); in the
+/// epoll set for readable from its creation on.
 pub struct Listener {
     fd: OwnedFd,
     waiters: VecDeque<EndpointId>,
@@ -73,17 +77,15 @@ impl TcpEp {
         self.send.as_ref().is_some_and(|s| inside(s.buf)) || self.recv.as_ref().is_some_and(|r| inside(r.buf))
     }
 
-    /// What the poll thread waits for: the socket, its events, and when a delayed Listen
-    /// error is due.
-    pub(super) fn interest(&self) -> (Option<RawFd>, libc::c_short, Option<Instant>) {
-        let mut ev = 0;
-        if self.connect.is_some() || self.send.is_some() {
-            ev |= libc::POLLOUT;
-        }
-        if self.recv.is_some() {
-            ev |= libc::POLLIN;
-        }
-        (self.fd.as_ref().map(|f| f.as_raw_fd()), ev, self.listen_error.map(|(at, _)| at))
+    /// When a delayed Listen error is due.
+    pub(super) fn listen_due(&self) -> Option<Instant> {
+        self.listen_error.map(|(at, _)| at)
+    }
+
+    /// A new socket (or none): not in the epoll set yet.
+    fn attach(&mut self, fd: Option<OwnedFd>) {
+        self.fd = fd;
+        self.armed = Armed::default();
     }
 
     /// Answers a failed Listen once its delay is over; the endpoint may listen again.
@@ -97,12 +99,6 @@ impl TcpEp {
     }
 }
 
-impl Listener {
-    pub(super) fn poll_fd(&self) -> Option<RawFd> {
-        (!self.waiters.is_empty()).then(|| self.fd.as_raw_fd())
-    }
-}
-
 /// Entry point of every TCP request.
 pub(super) fn tcp_op(st: &mut State, cfg: &NetConfig, p: Pending) {
     let req = p.req;
@@ -111,12 +107,15 @@ pub(super) fn tcp_op(st: &mut State, cfg: &NetConfig, p: Pending) {
     // Receive) and the robot's own address (Listen).
     let valid = st.valid_buffer(req.buffer, req.size);
     let robot_ip = if req.op == op::TCP_LISTEN { st.robot_ip() } else { 0 };
+    let poller = st.poller;
     let Some(t) = tcp_in(&mut st.eps, id).filter(|t| t.closing.is_none()) else { return p.fail(tcp::CONNECTION_CLOSED) };
     match req.op {
         op::TCP_BIND => bind(t, cfg, p),
         op::TCP_LISTEN => {
-            if let Some(key) = listen(t, &mut st.listeners, cfg, robot_ip, id, p) {
+            if let Some(key) = listen(t, &mut st.listeners, poller, cfg, robot_ip, id, p) {
                 accept_ready(st, cfg, key);
+            } else if let Some(at) = st.tcp(id).and_then(|t| t.listen_due()) {
+                st.schedule(at);
             }
         }
         op::TCP_CONNECT => {
@@ -167,7 +166,15 @@ fn bind(t: &mut TcpEp, cfg: &NetConfig, p: Pending) {
 
 /// Queues the endpoint on its listener; the key to accept on, unless the Listen failed
 /// (its error is then answered after [`LISTEN_RETRY_DELAY`]).
-fn listen(t: &mut TcpEp, listeners: &mut HashMap<(u32, u16), Listener>, cfg: &NetConfig, robot_ip: u32, id: EndpointId, p: Pending) -> Option<(u32, u16)> {
+fn listen(
+    t: &mut TcpEp,
+    listeners: &mut HashMap<(u32, u16), Listener>,
+    poller: &Poller,
+    cfg: &NetConfig,
+    robot_ip: u32,
+    id: EndpointId,
+    p: Pending,
+) -> Option<(u32, u16)> {
     match t.phase {
         TcpPhase::New => {}
         TcpPhase::Listening => {
@@ -185,7 +192,7 @@ fn listen(t: &mut TcpEp, listeners: &mut HashMap<(u32, u16), Listener>, cfg: &Ne
     let host_addr = cfg.local_addr(robot_addr, robot_ip);
     let key = match cfg.local_port(robot_port, "TCP listen") {
         None => Err(tcp::ADDRESSERROR),
-        Some(host_port) => shared_listener(listeners, host_addr, host_port),
+        Some(host_port) => shared_listener(listeners, poller, cfg, host_addr, host_port),
     };
     t.phase = TcpPhase::Listening;
     t.listen = Some(p);
@@ -205,12 +212,18 @@ fn listen(t: &mut TcpEp, listeners: &mut HashMap<(u32, u16), Listener>, cfg: &Ne
 
 /// The listener on (addr, port): the one already open there, else a new socket (port 0:
 /// an ephemeral port, keyed by the port it got).
-fn shared_listener(listeners: &mut HashMap<(u32, u16), Listener>, addr: u32, port: u16) -> Result<(u32, u16), i32> {
+fn shared_listener(listeners: &mut HashMap<(u32, u16), Listener>, poller: &Poller, cfg: &NetConfig, addr: u32, port: u16) -> Result<(u32, u16), i32> {
     if port != 0 && listeners.contains_key(&(addr, port)) {
         return Ok((addr, port));
     }
     let fd = open_listener(addr, port)?;
     let key = (addr, sys::local_addr(fd.as_raw_fd()).1);
+    // Armed once: connections that come while no Listen waits stay queued for the next
+    // Listen, which accepts at once (`accept_ready`).
+    if let Err(e) = poller.add_listener(fd.as_raw_fd(), key) {
+        cfg.report.warn(&format!("net: cannot watch a listening socket (epoll_ctl: {})", std::io::Error::from_raw_os_error(e)));
+        return Err(tcp::FAIL);
+    }
     listeners.insert(key, Listener { fd, waiters: VecDeque::new() });
     Ok(key)
 }
@@ -239,7 +252,7 @@ pub(super) fn accept_ready(st: &mut State, cfg: &NetConfig, key: (u32, u16)) {
         sys::set_int_opt(conn.as_raw_fd(), libc::IPPROTO_TCP, libc::TCP_NODELAY, 1);
         // A waiter always has its Listen pending (Close takes it off the queue).
         let Some((t, p)) = st.tcp(id).and_then(|t| t.listen.take().map(|p| (t, p))) else { continue };
-        t.fd = Some(conn);
+        t.attach(Some(conn));
         t.phase = TcpPhase::Active;
         t.listen_key = None;
         let mut r = NetResult::new(&p.req, tcp::SUCCESS);
@@ -250,7 +263,8 @@ pub(super) fn accept_ready(st: &mut State, cfg: &NetConfig, key: (u32, u16)) {
     }
 }
 
-/// Starts a connect; true when it finished at once (the caller then makes progress).
+/// Starts a connect; true when it is pending (the caller then makes progress, which
+/// finishes it or arms the socket).
 fn connect(t: &mut TcpEp, cfg: &NetConfig, p: Pending) -> bool {
     let req = p.req;
     if t.phase != TcpPhase::New {
@@ -271,11 +285,11 @@ fn connect(t: &mut TcpEp, cfg: &NetConfig, p: Pending) -> bool {
     t.robot_lport = bind_source_port(cfg, &fd, robot_lport);
     let (daddr, dport) = cfg.remote(req.addr, req.port as u16, "TCP connect");
     match sys::connect(fd.as_raw_fd(), daddr, dport) {
-        Ok(done) => {
-            t.fd = Some(fd);
+        Ok(_) => {
+            t.attach(Some(fd));
             t.phase = TcpPhase::Connecting;
             t.connect = Some(p);
-            done
+            true
         }
         Err(e) => {
             p.fail(tcp_error(e));
@@ -363,8 +377,56 @@ fn address(t: &mut TcpEp, cfg: &NetConfig, p: Pending) {
     p.complete(r)
 }
 
-/// Advances everything pending on a TCP endpoint without blocking.
+/// The socket of endpoint `id` reported readiness (and is disarmed): progress.
+pub(super) fn on_event(st: &mut State, id: EndpointId) {
+    if let Some(t) = st.tcp(id) {
+        t.armed.fired();
+    }
+    progress(st, id);
+}
+
+/// Advances everything pending on a TCP endpoint without blocking, then arms its socket
+/// for what still waits.
 pub(super) fn progress(st: &mut State, id: EndpointId) {
+    advance(st, id);
+    arm(st, id);
+}
+
+/// Arms the socket of endpoint `id` for what its parked operations wait on. If the epoll
+/// set refuses, they would wait forever: they fail instead, and a warning says why.
+fn arm(st: &mut State, id: EndpointId) {
+    let poller = st.poller;
+    let Some(t) = st.tcp(id) else { return };
+    let Some(fd) = t.fd.as_ref().map(|f| f.as_raw_fd()) else { return };
+    let mut want = 0;
+    if t.recv.is_some() {
+        want |= poller::IN;
+    }
+    if t.send.is_some() || t.connect.is_some() {
+        want |= poller::OUT;
+    }
+    let Err(e) = poller.arm(fd, Token::Ep(id), &mut t.armed, want) else { return };
+    if let Some(p) = t.connect.take() {
+        t.attach(None);
+        t.phase = TcpPhase::New;
+        p.fail(tcp::FAIL);
+    }
+    if let Some(s) = t.send.take() {
+        t.sticky.get_or_insert(tcp::FAIL);
+        s.p.fail(tcp::FAIL);
+    }
+    if let Some(r) = t.recv.take() {
+        t.sticky.get_or_insert(tcp::FAIL);
+        r.p.fail(tcp::FAIL);
+    }
+    let closing = t.closing.take();
+    st.host.warn(&format!("net: cannot watch the socket of TCP endpoint {} (epoll_ctl: {})", id.0, std::io::Error::from_raw_os_error(e)));
+    if let Some(close) = closing {
+        finish_close(st, id, close, false);
+    }
+}
+
+fn advance(st: &mut State, id: EndpointId) {
     let Some(t) = st.tcp(id) else { return };
     let Some(fd) = t.fd.as_ref().map(|f| f.as_raw_fd()) else { return };
     if t.phase == TcpPhase::Connecting && !finish_connect(t, fd) {
@@ -404,7 +466,7 @@ fn finish_connect(t: &mut TcpEp, fd: RawFd) -> bool {
             true
         }
         e => {
-            t.fd = None;
+            t.attach(None);
             t.phase = TcpPhase::New;
             p.fail(tcp_error(e));
             false
@@ -455,13 +517,22 @@ fn pull_receive(t: &mut TcpEp, fd: RawFd) {
         failure = Some(e);
     } else {
         while r.got < r.max {
+            let want = r.max - r.got;
             // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`), and the IPStack refuses to destroy a buffer while an operation on it is pending (ENV_DESTROY_BUFFER).
-            match unsafe { sys::recv(fd, (r.buf + r.got) as *mut u8, r.max - r.got) } {
+            match unsafe { sys::recv(fd, (r.buf + r.got) as *mut u8, want) } {
                 Ok(0) => {
                     t.eof = true;
                     break;
                 }
-                Ok(n) => r.got += n,
+                Ok(n) => {
+                    r.got += n;
+                    // A short read emptied the socket: the Receive completes without the
+                    // read that would say EAGAIN. Below min it reads on, to EAGAIN or EOF:
+                    // a FIN queued behind the data is then seen now, not after a wait.
+                    if n < want && r.got >= r.min {
+                        break;
+                    }
+                }
                 Err(libc::EINTR) => {}
                 Err(libc::EAGAIN) => break,
                 Err(e) => {

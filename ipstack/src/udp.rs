@@ -4,12 +4,15 @@ use std::os::fd::{AsRawFd, OwnedFd, RawFd};
 
 use super::codes::{op, udp, udp_error, PROTO_UDP};
 use super::config::NetConfig;
+use super::poller::{self, Armed, Token};
 use super::stack::{robot_peer, Endpoint, State};
 use super::{sys, EndpointId, NetResult, Pending};
 
 #[derive(Default)]
 pub struct UdpEp {
     fd: Option<OwnedFd>,
+    /// Whether `fd` is armed in the poll thread's epoll set, and for what.
+    armed: Armed,
     robot_lport: u16,
     connected: bool,
     nonblocking: bool,
@@ -24,18 +27,6 @@ impl UdpEp {
     pub(super) fn uses_buffer(&self, base: usize, size: usize) -> bool {
         let inside = |p: usize| p >= base && p < base + size;
         self.send.as_ref().is_some_and(|s| inside(s.1)) || self.recv.as_ref().is_some_and(|r| inside(r.1))
-    }
-
-    /// What the poll thread waits for: the socket and its events.
-    pub(super) fn interest(&self) -> (Option<RawFd>, libc::c_short) {
-        let mut ev = 0;
-        if self.send.is_some() {
-            ev |= libc::POLLOUT;
-        }
-        if self.recv.is_some() {
-            ev |= libc::POLLIN;
-        }
-        (self.fd.as_ref().map(|f| f.as_raw_fd()), ev)
     }
 }
 
@@ -53,12 +44,12 @@ pub(super) fn udp_op(st: &mut State, cfg: &NetConfig, p: Pending) {
         op::UDP_CONNECT | op::UDP_RESET_CONNECT => connect(u, cfg, p),
         op::UDP_SEND => {
             if send(u, cfg, valid, p) {
-                progress(u, cfg);
+                progress(st, cfg, id);
             }
         }
         op::UDP_RECEIVE => {
             if receive(u, valid, p) {
-                progress(u, cfg);
+                progress(st, cfg, id);
             }
         }
         op::UDP_CLOSE => close(st, id, p),
@@ -190,9 +181,33 @@ fn address(u: &mut UdpEp, cfg: &NetConfig, p: Pending) {
     p.complete(r)
 }
 
-/// Sends and receives what the socket allows without blocking.
-pub(super) fn progress(u: &mut UdpEp, cfg: &NetConfig) {
+/// The socket of endpoint `id` reported readiness (and is disarmed): progress.
+pub(super) fn on_event(st: &mut State, cfg: &NetConfig, id: EndpointId) {
+    if let Some(u) = st.udp(id) {
+        u.armed.fired();
+    }
+    progress(st, cfg, id);
+}
+
+/// Sends and receives what the socket allows without blocking, then arms the socket for
+/// what still waits (if the epoll set refuses, that fails instead, with a warning).
+pub(super) fn progress(st: &mut State, cfg: &NetConfig, id: EndpointId) {
+    let poller = st.poller;
+    let Some(u) = st.udp(id) else { return };
     let Some(fd) = u.fd.as_ref().map(|f| f.as_raw_fd()) else { return };
+    advance(u, cfg, fd);
+    let want = if u.recv.is_some() { poller::IN } else { 0 } | if u.send.is_some() { poller::OUT } else { 0 };
+    let Err(e) = poller.arm(fd, Token::Ep(id), &mut u.armed, want) else { return };
+    if let Some((p, ..)) = u.send.take() {
+        p.fail(udp::FAIL);
+    }
+    if let Some((p, ..)) = u.recv.take() {
+        p.fail(udp::FAIL);
+    }
+    st.host.warn(&format!("net: cannot watch the socket of UDP endpoint {} (epoll_ctl: {})", id.0, std::io::Error::from_raw_os_error(e)));
+}
+
+fn advance(u: &mut UdpEp, cfg: &NetConfig, fd: RawFd) {
     if let Some((_, buf, size, to)) = u.send.as_ref() {
         // SAFETY: the range was checked inside a live shared buffer when the request came (`State::valid_buffer`), and the IPStack refuses to destroy a buffer while an operation on it is pending (ENV_DESTROY_BUFFER).
         let code = match unsafe { sys::sendto(fd, *buf as *const u8, *size, *to) } {
