@@ -38,6 +38,16 @@ pub struct ShmTable {
 // are only handed out under its lock, so the table may be shared between threads.
 unsafe impl Send for Inner {}
 
+impl Inner {
+    /// Registers `base` as a new region with one reference.
+    fn insert(&mut self, base: *mut u8, size: usize, recycle: bool) -> MemId {
+        self.last_id = self.last_id.wrapping_add(1).max(1);
+        let id = MemId(self.last_id);
+        self.regions.insert(id, Region { base, size, refs: 1, recycle });
+        id
+    }
+}
+
 impl ShmTable {
     pub fn new() -> ShmTable {
         ShmTable { inner: Mutex::new(Inner { last_id: 0, regions: HashMap::default(), spare: Vec::new() }) }
@@ -61,16 +71,15 @@ impl ShmTable {
     /// size held (initialised, not zeroed): for a caller that writes all `size` of them.
     /// Spares the zeroing and the allocation of a large block per camera image.
     pub fn alloc_dirty(&self, size: usize) -> Option<(MemId, *mut u8)> {
-        let reused = {
-            let mut g = self.lock();
-            let at = g.spare.iter().position(|&(n, _)| n == size);
-            at.map(|i| g.spare.swap_remove(i).1)
-        };
-        let base = match reused {
-            Some(b) => b,
-            // SAFETY: calloc with a non-zero size; null is checked below.
-            None => unsafe { libc::calloc(1, size.max(1)) }.cast::<u8>(),
-        };
+        let mut g = self.lock();
+        if let Some(i) = g.spare.iter().position(|&(n, _)| n == size) {
+            // A spare block: one lock for taking it and registering the region.
+            let base = g.spare.swap_remove(i).1;
+            return Some((g.insert(base, size, true), base));
+        }
+        drop(g);
+        // SAFETY: calloc with a non-zero size; null is checked below.
+        let base = unsafe { libc::calloc(1, size.max(1)) }.cast::<u8>();
         if base.is_null() {
             return None;
         }
@@ -78,11 +87,7 @@ impl ShmTable {
     }
 
     fn insert(&self, base: *mut u8, size: usize, recycle: bool) -> MemId {
-        let mut g = self.lock();
-        g.last_id = g.last_id.wrapping_add(1).max(1);
-        let id = MemId(g.last_id);
-        g.regions.insert(id, Region { base, size, refs: 1, recycle });
-        id
+        self.lock().insert(base, size, recycle)
     }
 
     pub fn base(&self, id: MemId) -> Option<(*mut u8, usize)> {
