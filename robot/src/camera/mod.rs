@@ -136,9 +136,10 @@ pub struct Camera {
     reuse: Reuse,
     /// Runs of identical pixels of `rgb` when it is a render (the settings map equal
     /// pixels to equal pixels, so they hold after them too), and their layers' runs.
-    runs: Option<FlatRuns>,
+    runs: FlatRuns,
+    /// `runs` describe `rgb` (false once `rgb` is replaced by anything but a render).
+    runs_hold: bool,
     layer_runs: LayerRuns,
-    spare_runs: FlatRuns,
 }
 
 /// What `rgb` and the last layers were made from: a robot whose camera and scene did not
@@ -168,9 +169,9 @@ impl Camera {
             last_counts: [0; CDT_CHANNELS],
             settings: CameraSettings::default(),
             reuse: Reuse::default(),
-            runs: None,
+            runs: FlatRuns::default(),
+            runs_hold: false,
             layer_runs: LayerRuns::default(),
-            spare_runs: FlatRuns::default(),
         }
     }
 
@@ -203,10 +204,9 @@ impl Camera {
             self.reuse.rgb_unchanged = true;
             return;
         }
-        let mut runs = self.runs.take().unwrap_or_else(|| std::mem::take(&mut self.spare_runs));
-        cam.render(world, wall_mm, &mut self.rgb.data, Some((&mut runs, 2 * MIN_RUN)));
+        cam.render(world, wall_mm, &mut self.rgb.data, Some((&mut self.runs, 2 * MIN_RUN)));
         self.rgb_replaced();
-        self.runs = Some(runs);
+        self.runs_hold = true;
         self.reuse.scene = Some((*cam, world.clone(), wall_mm, self.settings));
     }
 
@@ -214,10 +214,7 @@ impl Camera {
     fn rgb_replaced(&mut self) {
         self.settings.apply(&mut self.rgb.data);
         self.reuse = Reuse::default();
-        // (a render records its runs again)
-        if let Some(r) = self.runs.take() {
-            self.spare_runs = r;
-        }
+        self.runs_hold = false; // (a render records its runs again)
     }
 
     /// Bytes of one image vector ([`Camera::build_vector`]'s `out`).
@@ -243,7 +240,7 @@ impl Camera {
                 self.layout.write_tags(out, self.field_counter, *counts).expect("sized");
             }
             _ => {
-                let runs = self.runs.as_ref().map(|r| (r, &mut self.layer_runs));
+                let runs = self.runs_hold.then_some((&self.runs, &mut self.layer_runs));
                 self.last_counts = synthesize_runs(&self.layout, &self.rgb.data, runs, &self.lut, self.field_counter, out);
                 // Kept only once a picture repeats: a moving camera pays no copy.
                 self.reuse.layers = unchanged.then(|| (key, out[start..end].to_vec(), self.last_counts));
