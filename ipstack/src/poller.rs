@@ -11,7 +11,7 @@
 //! A listening socket is added once, edge-triggered: connections that come while no
 //! Listen waits stay queued and are accepted by the next Listen at once.
 use std::io;
-use std::os::fd::{AsRawFd, FromRawFd, OwnedFd, RawFd};
+use std::os::fd::{AsRawFd, OwnedFd, RawFd};
 
 use super::sys;
 use super::EndpointId;
@@ -78,20 +78,10 @@ pub struct Poller {
 
 impl Poller {
     pub fn new() -> io::Result<Poller> {
-        // SAFETY: plain syscall; a fresh descriptor we own.
-        let ep = unsafe { libc::epoll_create1(libc::EPOLL_CLOEXEC) };
-        if ep < 0 {
-            return Err(io::Error::last_os_error());
-        }
-        // SAFETY: `ep` is the fresh epoll descriptor just created (checked non-negative).
-        let ep = unsafe { OwnedFd::from_raw_fd(ep) };
-        // SAFETY: plain syscall; a fresh descriptor we own.
-        let wake = unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) };
-        if wake < 0 {
-            return Err(io::Error::last_os_error());
-        }
-        // SAFETY: `wake` is the fresh eventfd just created (checked non-negative).
-        let wake = unsafe { OwnedFd::from_raw_fd(wake) };
+        // SAFETY: plain syscalls making fresh descriptors.
+        let ep = sys::owned(unsafe { libc::epoll_create1(libc::EPOLL_CLOEXEC) }).map_err(io::Error::from_raw_os_error)?;
+        // SAFETY: as above.
+        let wake = sys::owned(unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) }).map_err(io::Error::from_raw_os_error)?;
         let poller = Poller { ep, wake };
         // Level-triggered: it stays readable until drained.
         poller.ctl(libc::EPOLL_CTL_ADD, poller.wake.as_raw_fd(), IN, Token::Wake).map_err(io::Error::from_raw_os_error)?;
@@ -101,11 +91,7 @@ impl Poller {
     fn ctl(&self, op: libc::c_int, fd: RawFd, events: u32, token: Token) -> Result<(), i32> {
         let mut ev = libc::epoll_event { events, u64: token.encode() };
         // SAFETY: `ev` is a live local the kernel only reads.
-        if unsafe { libc::epoll_ctl(self.ep.as_raw_fd(), op, fd, &mut ev) } < 0 {
-            Err(sys::errno())
-        } else {
-            Ok(())
-        }
+        sys::check(unsafe { libc::epoll_ctl(self.ep.as_raw_fd(), op, fd, &mut ev) }).map(drop)
     }
 
     /// Adds a listening socket, readable edge-triggered, for good.
@@ -114,20 +100,17 @@ impl Poller {
     }
 
     /// Arms `fd` to report `want` once (with what `armed` has already), unless it is
-    /// armed for that already. An errno other than EEXIST/ENOENT (which only say the set
-    /// and `armed` disagreed, and are mended by the other operation) is returned: the
-    /// caller must fail what waits on the socket.
+    /// armed for that already. An errno is returned: the caller must fail what waits on
+    /// the socket. (`armed.in_set` is always right: a socket is added once, by the endpoint
+    /// that owns it, and leaves the set when it is closed.)
     pub fn arm(&self, fd: RawFd, token: Token, armed: &mut Armed, want: u32) -> Result<(), i32> {
         if want & !armed.events == 0 {
             return Ok(());
         }
         let events = armed.events | want;
         let flags = events | libc::EPOLLONESHOT as u32;
-        let (first, second) = if armed.in_set { (libc::EPOLL_CTL_MOD, libc::EPOLL_CTL_ADD) } else { (libc::EPOLL_CTL_ADD, libc::EPOLL_CTL_MOD) };
-        match self.ctl(first, fd, flags, token) {
-            Err(libc::EEXIST | libc::ENOENT) => self.ctl(second, fd, flags, token)?,
-            r => r?,
-        }
+        let op = if armed.in_set { libc::EPOLL_CTL_MOD } else { libc::EPOLL_CTL_ADD };
+        self.ctl(op, fd, flags, token)?;
         *armed = Armed { in_set: true, events };
         Ok(())
     }
@@ -136,12 +119,7 @@ impl Poller {
     /// (EINTR included).
     pub fn wait(&self, events: &mut [libc::epoll_event], timeout: i32) -> Result<usize, i32> {
         // SAFETY: `events` is a live array of `events.len()` entries the kernel may fill.
-        let n = unsafe { libc::epoll_wait(self.ep.as_raw_fd(), events.as_mut_ptr(), events.len() as i32, timeout) };
-        if n < 0 {
-            Err(sys::errno())
-        } else {
-            Ok(n as usize)
-        }
+        sys::check(unsafe { libc::epoll_wait(self.ep.as_raw_fd(), events.as_mut_ptr(), events.len() as i32, timeout) }).map(|n| n as usize)
     }
 
     /// Makes the poll thread recompute its timeout (a delayed reply became due earlier).

@@ -2,7 +2,6 @@
 //! creation, the robot's settings registry, the entry point of every request, and the poll
 //! thread that finishes what would block.
 use std::collections::{BTreeMap, HashMap};
-use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -32,29 +31,9 @@ impl Endpoint {
     }
 }
 
-/// Endpoint ids are numbers the stack hands out in sequence: a multiplicative hash spreads
-/// them well enough, without SipHash's cost on every request (and every
-/// `endpoint_protocol` query) of a streaming object.
-#[derive(Default)]
-pub struct IdHasher(u64);
-
-const GOLDEN: u64 = 0x9e37_79b9_7f4a_7c15;
-
-impl Hasher for IdHasher {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 = (self.0.rotate_left(8) ^ u64::from(b)).wrapping_mul(GOLDEN);
-        }
-    }
-    fn write_u32(&mut self, n: u32) {
-        self.0 = (self.0 ^ u64::from(n)).wrapping_mul(GOLDEN);
-    }
-}
-
-pub(super) type IdMap<V> = HashMap<EndpointId, V, BuildHasherDefault<IdHasher>>;
+/// Endpoint ids are numbers the stack hands out in sequence: Fx spreads them well
+/// enough, without SipHash's cost on every request of a streaming object.
+pub(super) type IdMap<V> = rustc_hash::FxHashMap<EndpointId, V>;
 
 #[derive(Clone)]
 enum RegValue {

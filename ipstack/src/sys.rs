@@ -7,7 +7,7 @@ pub fn errno() -> i32 {
     io::Error::last_os_error().raw_os_error().unwrap_or(libc::EIO)
 }
 
-fn check(r: libc::c_int) -> Result<libc::c_int, i32> {
+pub(super) fn check(r: libc::c_int) -> Result<libc::c_int, i32> {
     if r < 0 {
         Err(errno())
     } else {
@@ -29,11 +29,16 @@ pub fn from_sockaddr(sa: &libc::sockaddr_in) -> (u32, u16) {
 }
 
 /// A non-blocking, close-on-exec IPv4 socket.
+/// The descriptor a call that makes one returned, owned (or its errno).
+pub(super) fn owned(r: libc::c_int) -> Result<OwnedFd, i32> {
+    let fd = check(r)?;
+    // SAFETY: a fresh descriptor the call just made for us alone.
+    Ok(unsafe { OwnedFd::from_raw_fd(fd) })
+}
+
 pub fn socket(kind: libc::c_int) -> Result<OwnedFd, i32> {
     // SAFETY: plain syscall.
-    let fd = check(unsafe { libc::socket(libc::AF_INET, kind | libc::SOCK_NONBLOCK | libc::SOCK_CLOEXEC, 0) })?;
-    // SAFETY: a fresh descriptor we own.
-    Ok(unsafe { OwnedFd::from_raw_fd(fd) })
+    owned(unsafe { libc::socket(libc::AF_INET, kind | libc::SOCK_NONBLOCK | libc::SOCK_CLOEXEC, 0) })
 }
 
 pub fn set_int_opt(fd: RawFd, level: libc::c_int, name: libc::c_int, v: libc::c_int) {
@@ -115,9 +120,7 @@ pub fn peer_addr(fd: RawFd) -> (u32, u16) {
 
 pub fn accept(fd: RawFd) -> Result<OwnedFd, i32> {
     // SAFETY: null address out-params are allowed.
-    let c = check(unsafe { libc::accept4(fd, std::ptr::null_mut(), std::ptr::null_mut(), libc::SOCK_NONBLOCK | libc::SOCK_CLOEXEC) })?;
-    // SAFETY: a fresh descriptor we own.
-    Ok(unsafe { OwnedFd::from_raw_fd(c) })
+    owned(unsafe { libc::accept4(fd, std::ptr::null_mut(), std::ptr::null_mut(), libc::SOCK_NONBLOCK | libc::SOCK_CLOEXEC) })
 }
 
 /// read(2): Ok(0) = EOF.
