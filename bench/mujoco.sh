@@ -52,7 +52,6 @@ if [ -n "$BEFORE" ]; then
     git archive "$BEFORE" sim/mujoco tools/robot_peer.py | tar -x -C "$work/before"
     peer[before]=$work/before/sim/mujoco
   fi
-  [ -f "${peer[before]}/robot_peer.py" ] || cp tools/robot_peer.py "${peer[before]}/" 2>/dev/null || true
   sides=(before after)
 fi
 # cargo openr run starts $OPENR_PYTHON .../peer.py: this one runs $PEER/peer.py instead.
@@ -81,10 +80,10 @@ run() {
   local side=$1 n=$2 mode=$3 secs=$4 out=$work/run
   rm -f "$out"
   case $mode in
-    alone) PEER=${peer[$side]} timed "$out" "$py" "${peer[$side]}/peer.py" --bench "$secs" --robots "$n" ;;
+    alone) timed "$out" "$py" "${peer[$side]}/peer.py" --bench "$secs" --robots "$n" ;;
     *) PEER=${peer[$side]} OPENR_PYTHON=$work/python OPENRSDK_ROOT=$root timed "$out" "$exe" run "$ms" --sim mujoco \
          --robots "$n" --for "${secs}s" --speed max ${mode/plain/} ;;
-  esac || { cat "$out.err"; exit 1; }
+  esac || { cat "$out.err" >&2; exit 1; }
   local cpu
   read -r _ cpu <"$out"
   echo "$(grep -o 'whole run [0-9.]* s wall -> [0-9.]* x' "$out.err" | awk '{ print $7 }') $cpu"
@@ -113,7 +112,7 @@ for ((round = 1; round <= ROUNDS; round++)); do
     done
   done
   echo "   round $round done; $(uptime | sed 's/.*load/load/')"
-  cut -d, -f1 /proc/loadavg | cut -d' ' -f1 >>"$work/load"
+  cut -d' ' -f1 /proc/loadavg >>"$work/load"
 done
 
 python3 - "$work/results" "$SIZES" "$work/load" <<'EOF'

@@ -95,7 +95,10 @@ class Link:
             roles |= rp.ROLE_CAMERA
         name = f"sim/mujoco/peer.py robot {self.index}".encode()
         self.peer.send(rp.HELLO, 0, struct.pack("<IIH", roles, rp.FLAG_CLOCK, len(name)) + name)
-        kind, _, payload = self.recv()
+        try:
+            kind, _, payload = self.recv()
+        except (EOFError, ConnectionResetError):
+            raise ProtocolError(f"robot {self.index}: the runtime closed the connection before its WELCOME") from None
         if kind != rp.WELCOME:
             raise ProtocolError(f"robot {self.index}: expected WELCOME, got message type {kind}")
         w = rp.parse_welcome(payload)

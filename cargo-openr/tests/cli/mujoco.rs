@@ -333,6 +333,22 @@ fn sim_python() -> std::path::PathBuf {
 /// peer says what it expected and what came, and exits 2 (no traceback, no hang).
 #[test]
 fn a_bad_message_header_stops_the_peer_with_what_came() {
+    let err = peer_answered_with(Some(b"HTTP/1.1 200 OK\r\n\r\n"));
+    let want = "robot 0: bad message header: expected magic b'ORP1' version 1, got magic b'HTTP' version 12591 (bytes 48 54 54 50 2f 31";
+    assert!(err.contains(want), "expected `{want}` in:\n{err}");
+}
+
+#[test]
+fn a_runtime_leaving_before_its_welcome_stops_the_peer_with_what_happened() {
+    let err = peer_answered_with(None);
+    let want = "robot 0: the runtime closed the connection before its WELCOME";
+    assert!(err.contains(want), "expected `{want}` in:\n{err}");
+}
+
+/// Starts the peer on a socket of the test's, reads its HELLO and answers `reply` (or
+/// closes the connection): the peer must stop with exit code 2 and no traceback; its
+/// stderr.
+fn peer_answered_with(reply: Option<&[u8]>) -> String {
     use std::io::{Read, Write};
     use std::os::unix::net::UnixListener;
     use std::time::{Duration, Instant};
@@ -362,11 +378,13 @@ fn a_bad_message_header_stops_the_peer_with_what_came() {
     assert_eq!(&head[..4], b"ORP1");
     let mut hello = vec![0u8; u32::from_le_bytes(head[8..12].try_into().unwrap()) as usize];
     conn.read_exact(&mut hello).unwrap();
-    conn.write_all(b"HTTP/1.1 200 OK\r\n\r\n").unwrap();
+    match reply {
+        Some(bytes) => conn.write_all(bytes).unwrap(),
+        None => drop(conn),
+    }
     let out = peer.wait_with_output().unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
     assert_eq!(out.status.code(), Some(2), "{err}");
-    let want = "robot 0: bad message header: expected magic b'ORP1' version 1, got magic b'HTTP' version 12591 (bytes 48 54 54 50 2f 31";
-    assert!(err.contains(want), "expected `{want}` in:\n{err}");
     assert!(!err.contains("Traceback"), "{err}");
+    err
 }
