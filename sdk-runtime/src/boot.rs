@@ -5,7 +5,7 @@ use std::ffi::CString;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
 use std::sync::mpsc;
-use std::sync::{Arc, Mutex, OnceLock, RwLock};
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use crate::cfg;
@@ -210,7 +210,7 @@ fn install(
         ms,
         design: CString::new(opts.design.clone()).map_err(|_| ErrorKind::Runtime("bad design name".into()))?,
         design_db,
-        objects: RwLock::new(Vec::new()),
+        objects: Default::default(),
         registry: Mutex::new(Vec::new()),
         shm: ShmTable::new(),
         design_data: Mutex::new(Vec::new()),
@@ -319,17 +319,8 @@ fn with_cfg_line(e: Error, cfg: &std::path::Path, line: usize) -> Error {
 /// Starts the object's thread, which loads the module (static constructors run there)
 /// and then serves messages.
 fn load_object(rt: &'static Runtime, oid: usize, ms_path: &str, host: &std::path::Path, image: Vec<u8>) -> Result<()> {
-    let index = rt.objects.read().unwrap_or_else(|p| p.into_inner()).len();
-    let slot = Arc::new(ObjectSlot {
-        index,
-        oid,
-        bin: ms_path.to_string(),
-        module: OnceLock::new(),
-        mailbox: Default::default(),
-        stopped: AtomicBool::new(false),
-        sleeping: AtomicBool::new(false),
-    });
-    rt.objects.write().unwrap_or_else(|p| p.into_inner()).push(slot.clone());
+    let slot = rt.objects.push(|index| Arc::new(ObjectSlot::new(index, oid, ms_path.to_string())));
+    let index = slot.index;
     let (done_tx, done_rx) = mpsc::sync_channel::<Result<()>>(1);
     let thread_name: String = host.file_stem().map_or("object".into(), |s| s.to_string_lossy().into_owned());
     let host = host.to_path_buf();

@@ -58,7 +58,7 @@ pub mod input {
         /// still blocked while they have not finished that message.
         blocked: Mutex<Vec<(usize, u64)>>,
         /// Messages each object has finished (`run_loop`).
-        handled: [AtomicU64; MAX_OBJECTS],
+        handled: [crate::padded::Line<AtomicU64>; MAX_OBJECTS],
         /// Busy objects with their message count and since when they were seen busy in it.
         busy: Mutex<Vec<(usize, u64, Instant)>>,
     }
@@ -68,7 +68,7 @@ pub mod input {
             Watch {
                 tids: Mutex::new(Vec::new()),
                 blocked: Mutex::new(Vec::new()),
-                handled: std::array::from_fn(|_| AtomicU64::new(0)),
+                handled: std::array::from_fn(|_| crate::padded::Line(AtomicU64::new(0))),
                 busy: Mutex::new(Vec::new()),
             }
         }

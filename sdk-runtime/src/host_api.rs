@@ -135,7 +135,7 @@ pub(crate) fn object_exit(status: i32) {
 }
 
 pub(crate) fn self_oid() -> *mut c_void {
-    object::current().map_or(0xFFFF_FFFF, |s| s.oid) as *mut c_void
+    object::current_oid().unwrap_or(0xFFFF_FFFF) as *mut c_void
 }
 
 pub(crate) fn self_name() -> *const c_char {

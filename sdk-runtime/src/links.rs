@@ -15,7 +15,9 @@ use crate::runtime::Service;
 const UNSET: u32 = Selector::UNDEF.0;
 
 /// One way of a connection: messages from object `from` to object `to`'s entry `entry`.
+/// A cache line of its own: the two ways of a link are counted by different threads.
 #[derive(Debug)]
+#[repr(align(64))]
 pub struct Way {
     from: usize,
     to: usize,

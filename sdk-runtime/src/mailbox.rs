@@ -9,17 +9,6 @@ use std::collections::VecDeque;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Condvar, Mutex, MutexGuard};
 
-#[repr(align(64))]
-#[derive(Default)]
-struct Padded(AtomicUsize);
-
-impl std::ops::Deref for Padded {
-    type Target = AtomicUsize;
-    fn deref(&self) -> &AtomicUsize {
-        &self.0
-    }
-}
-
 /// What the lock guards.
 struct Inner<T> {
     queue: VecDeque<T>,
@@ -34,13 +23,13 @@ pub struct Mailbox<T> {
     inner: Mutex<Inner<T>>,
     /// Messages queued: what a spinning receiver polls (a cache line of its own, so
     /// the polling does not contend with senders taking the lock).
-    queued: Padded,
+    queued: crate::padded::Line<AtomicUsize>,
     cv: Condvar,
 }
 
 impl<T> Default for Mailbox<T> {
     fn default() -> Self {
-        Mailbox { inner: Mutex::new(Inner { queue: VecDeque::new(), parked: false, closed: false }), queued: Padded::default(), cv: Condvar::new() }
+        Mailbox { inner: Mutex::new(Inner { queue: VecDeque::new(), parked: false, closed: false }), queued: Default::default(), cv: Condvar::new() }
     }
 }
 

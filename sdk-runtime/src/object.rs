@@ -52,6 +52,11 @@ impl crate::sched::Wake for ObjectSlot {
 }
 
 impl ObjectSlot {
+    /// A slot for the object loaded `index`th, before its module is.
+    pub fn new(index: usize, oid: usize, bin: String) -> ObjectSlot {
+        ObjectSlot { index, oid, bin, module: OnceLock::new(), mailbox: Default::default(), stopped: AtomicBool::new(false), sleeping: AtomicBool::new(false) }
+    }
+
     /// The object's name: its ocf NAME, else the `.BIN` file name.
     pub fn name(&self) -> &str {
         self.module.get().and_then(|m| m.ocf_name.as_deref()).unwrap_or_else(|| self.bin.rsplit('/').next().unwrap_or(&self.bin))

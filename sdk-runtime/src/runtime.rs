@@ -12,7 +12,7 @@ use std::cell::Cell;
 use std::ffi::CString;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, RecvTimeoutError};
-use std::sync::{Arc, Mutex, RwLock};
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use crate::clock::Clock;
@@ -120,7 +120,7 @@ pub struct Runtime {
     pub ms: MsDir,
     pub design: CString,
     pub design_db: Vec<(String, String)>,
-    pub objects: RwLock<Vec<Arc<ObjectSlot>>>,
+    pub objects: crate::objects::Objects,
     pub registry: Mutex<Vec<Service>>,
     pub shm: ShmTable,
     pub design_data: Mutex<Vec<(DesignDataId, MemId)>>,
@@ -230,19 +230,19 @@ impl Runtime {
         })
     }
 
-    pub fn object(&self, oid: usize) -> Option<Arc<ObjectSlot>> {
-        // A handful of objects: a scan beats hashing.
-        self.objects.read().unwrap_or_else(|p| p.into_inner()).iter().find(|s| s.oid == oid).cloned()
+    pub fn object(&self, oid: usize) -> Option<&Arc<ObjectSlot>> {
+        self.objects.get(oid)
     }
 
-    pub fn all_objects(&self) -> Vec<Arc<ObjectSlot>> {
-        self.objects.read().unwrap_or_else(|p| p.into_inner()).clone()
+    /// Every loaded object, in load order (`ObjectSlot::index`).
+    pub fn all_objects(&self) -> &[Arc<ObjectSlot>] {
+        self.objects.all()
     }
 
     /// Queues a message (asynchronous `Send`).
     pub fn send(&self, dest: usize, selector: Selector, data: Vec<u8>) -> Result<(), CallError> {
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
-        enqueue(&self.sched, &slot, Envelope { selector, data, reply: None, caller: None })?;
+        enqueue(&self.sched, slot, Envelope { selector, data, reply: None, caller: None })?;
         self.links.count(crate::object::current_oid, dest, selector);
         Ok(())
     }
@@ -250,8 +250,7 @@ impl Runtime {
     /// Whether a frame may start while every object is idle: the boot sequence is not
     /// between two steps, or an object waits for virtual time to pass.
     pub fn frames_allowed(&self) -> bool {
-        let objects = self.objects.read().unwrap_or_else(|p| p.into_inner());
-        objects.iter().any(|s| s.sleeping.load(Ordering::Acquire)) || !self.booting.load(Ordering::Acquire)
+        self.all_objects().iter().any(|s| s.sleeping.load(Ordering::Acquire)) || !self.booting.load(Ordering::Acquire)
     }
 
     /// Sends and waits for the answer (`Call`), at most `timeout` if given.
@@ -264,7 +263,7 @@ impl Runtime {
     pub fn call_start(&self, dest: usize, selector: Selector, data: Vec<u8>) -> Result<mpsc::Receiver<Vec<u8>>, CallError> {
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
         let (tx, rx) = mpsc::sync_channel(1);
-        enqueue(&self.sched, &slot, Envelope { selector, data, reply: Some(tx), caller: None })?;
+        enqueue(&self.sched, slot, Envelope { selector, data, reply: Some(tx), caller: None })?;
         Ok(rx)
     }
 
@@ -278,7 +277,7 @@ impl Runtime {
         let slot = self.object(dest).ok_or(CallError::UnknownDestination)?;
         let (tx, rx) = mpsc::sync_channel(1);
         let caller = me.as_ref().map(|m| m.index);
-        enqueue(&self.sched, &slot, Envelope { selector, data, reply: Some(tx), caller })?;
+        enqueue(&self.sched, slot, Envelope { selector, data, reply: Some(tx), caller })?;
         queued();
         let held = caller.is_some_and(|i| self.sched.calling(i));
         let answer = match (crate::object::spin_recv(&rx), timeout) {

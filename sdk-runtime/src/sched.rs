@@ -123,7 +123,7 @@ pub struct Sched {
     state: Mutex<State>,
     /// The selector each object runs now, by index, when not `IDLE`; written by the
     /// object's own thread, read by the shutdown sequence.
-    busy: Box<[std::sync::atomic::AtomicU32]>,
+    busy: Box<[crate::padded::Line<std::sync::atomic::AtomicU32>]>,
     /// Tickets queued (`State::queue.len()`, kept under the lock): none, and nothing
     /// serialised, lets a message begin and end without the lock.
     tickets: std::sync::atomic::AtomicUsize,
@@ -141,7 +141,7 @@ impl Default for Sched {
     fn default() -> Sched {
         Sched {
             state: Mutex::default(),
-            busy: (0..BUSY_SLOTS).map(|_| std::sync::atomic::AtomicU32::new(IDLE.0)).collect(),
+            busy: (0..BUSY_SLOTS).map(|_| crate::padded::Line(std::sync::atomic::AtomicU32::new(IDLE.0))).collect(),
             tickets: std::sync::atomic::AtomicUsize::new(0),
             cv: Condvar::new(),
             frame_cv: Condvar::new(),
