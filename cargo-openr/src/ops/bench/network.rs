@@ -114,9 +114,22 @@ fn ftp_retr(port: u16, pasv_offset: u16, name: &str) -> Result<f64> {
     Ok(total as f64 / secs)
 }
 
+/// How the host FTP server sends a file.
+#[derive(Clone, Copy)]
+enum Retr {
+    /// `std::io::copy`, which Linux makes a `sendfile`: what a host server does.
+    Sendfile,
+    /// What the ftpd program does: an 8 KiB read, then an 8 KiB send, on a socket with
+    /// TCP_NODELAY (as the robot's IP stack sets): the same work without the runtime.
+    Chunks,
+}
+
+/// The ftpd program's `FTP_BUFFER_SIZE`.
+const FTPD_CHUNK: usize = 8192;
+
 /// A plain host FTP server (USER, PASS, TYPE, PASV, RETR of one file, QUIT) for the
 /// same client; returns its control port.
-fn host_ftp_server(file: PathBuf) -> Result<u16> {
+fn host_ftp_server(file: PathBuf, how: Retr) -> Result<u16> {
     use std::io::{BufRead, BufReader, Write};
     let listener = std::net::TcpListener::bind("127.0.0.1:0")?;
     let port = listener.local_addr()?.port();
@@ -144,7 +157,22 @@ fn host_ftp_server(file: PathBuf) -> Result<u16> {
                         "RETR" => {
                             let (mut d, _) = pasv.take().expect("PASV first").accept()?;
                             w.write_all(b"150 data\r\n")?;
-                            std::io::copy(&mut std::fs::File::open(&file)?, &mut d)?;
+                            let mut f = std::fs::File::open(&file)?;
+                            match how {
+                                Retr::Sendfile => drop(std::io::copy(&mut f, &mut d)?),
+                                Retr::Chunks => {
+                                    use std::io::Read;
+                                    d.set_nodelay(true)?;
+                                    let mut buf = [0u8; FTPD_CHUNK];
+                                    loop {
+                                        let n = f.read(&mut buf)?;
+                                        if n == 0 {
+                                            break;
+                                        }
+                                        d.write_all(&buf[..n])?;
+                                    }
+                                }
+                            }
                             drop(d);
                             w.write_all(b"226 done\r\n")?;
                         }
@@ -168,6 +196,8 @@ const ECHO_HOST_P50: &str = "TCP echo round trip through a plain host echo serve
 const ECHO_HOST_P99: &str = "TCP echo round trip through a plain host echo server p99";
 const FTP_ROBOT: &str = "FTP RETR of 64 MiB from the ftpd robot (8 KiB sends)";
 const FTP_HOST: &str = "FTP RETR of 64 MiB from a plain host FTP server";
+const FTP_ROBOT_LIKE: &str = "FTP RETR from the ftpd robot, beside a host server doing ftpd's 8 KiB reads and sends";
+const FTP_HOST_CHUNKS: &str = "FTP RETR of 64 MiB from a host server doing ftpd's 8 KiB reads and sends (TCP_NODELAY)";
 
 /// Echo round trips through the tcp-echo robot and bytes per second through the ftpd
 /// robot, each next to the same client and a plain host server in the same run.
@@ -210,8 +240,12 @@ pub fn network(exe: &Path, repo: &Path, root: &Path, work: &Path, tab: &mut Tabl
     let rate = ftp_retr(10021 + OFFSET + 1, OFFSET + 1, "BIG.BIN")?;
     drop(robot);
     tab.push(FTP_ROBOT, rate / 1e6, "MB/s", Some(FTP_HOST));
-    let port = host_ftp_server(big)?;
+    tab.push(FTP_ROBOT_LIKE, rate / 1e6, "MB/s", Some(FTP_HOST_CHUNKS));
+    let port = host_ftp_server(big.clone(), Retr::Sendfile)?;
     let rate = ftp_retr(port, 0, "BIG.BIN")?;
     tab.push(FTP_HOST, rate / 1e6, "MB/s", None);
+    let port = host_ftp_server(big, Retr::Chunks)?;
+    let rate = ftp_retr(port, 0, "BIG.BIN")?;
+    tab.push(FTP_HOST_CHUNKS, rate / 1e6, "MB/s", None);
     Ok(())
 }
