@@ -72,8 +72,23 @@ pub fn default_prefix() -> Option<PathBuf> {
     Some(data.join("cargo-openr").join("OPEN_R_SDK"))
 }
 
+/// Why `install` builds the tree (it takes a minute or two: the runtime's C++ surface
+/// is compiled), told before it starts so that a caller can say so.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Building {
+    /// No SDK root there yet.
+    New,
+    /// A root made by another build of cargo-openr (another payload).
+    OtherBuild,
+}
+
 /// Installs the SDK root at `prefix` using `exe` (the multi-call binary) for the tools.
 pub fn install(prefix: &Path, exe: &Path) -> Result<Outcome, Error> {
+    install_telling(prefix, exe, |_| {})
+}
+
+/// [`install`], calling `building` once before a tree is built.
+pub fn install_telling(prefix: &Path, exe: &Path, building: impl FnOnce(Building)) -> Result<Outcome, Error> {
     // Fast path: the very executable that wrote the stamp (same size and mtime) carries
     // the same payload, so there is nothing to hash.
     let meta = exe_fingerprint(exe);
@@ -98,6 +113,7 @@ pub fn install(prefix: &Path, exe: &Path) -> Result<Outcome, Error> {
     }
     let name = prefix.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "sdk".into());
     remove_leftovers(parent, &name);
+    building(if is_sdk_root(prefix) { Building::OtherBuild } else { Building::New });
     let staging = parent.join(format!(".{name}.partial-{}", std::process::id()));
     let result = build_tree(&staging, prefix, &exe_bytes, &stamp).and_then(|()| swap_in(&staging, prefix));
     if result.is_err() {

@@ -39,7 +39,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let work = args.repo.join("target/bench");
     std::fs::create_dir_all(&work)?;
     let root = std::path::absolute(work.join("sdk"))?;
-    sdk::prepare(&root)?;
+    sdk::prepare(&root, shell)?;
     shell.status("Benchmarking", "bench/programs (real objects, real runtime)");
     let runs = args.runs as usize;
     let report = bench::run_all(&exe, &std::path::absolute(&args.repo)?, &root, &std::path::absolute(&work)?, runs, &args.only, |k| {

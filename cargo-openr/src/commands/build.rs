@@ -49,7 +49,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
     let inputs = ConfigInputs { sdk: args.sdk, cxxflags: args.cxxflags, ldflags: args.ldflags, project: Some(args.path.clone()), ..Default::default() };
     let cfg = config::resolve(&inputs)?;
     let root = cfg.sdk.value;
-    sdk::prepare(&root)?;
+    sdk::prepare(&root, shell)?;
     let (mut cxxflags, mut ldflags) = (cfg.cxxflags.value, cfg.ldflags.value);
     if let Some(s) = args.sanitize {
         cxxflags.extend(s.cxxflags());

@@ -188,7 +188,7 @@ pub fn exec(args: Args, given: &clap::ArgMatches, shell: &mut Shell) -> anyhow::
     // The SDK root whose system objects this run loads, as `ops::config` resolves it
     // (`--sdk`, `$OPENRSDK_ROOT` when it is one of ours, `openr.toml`, the per-user default).
     let root = cfg.sdk.value;
-    sdk::prepare(&root)?;
+    sdk::prepare(&root, shell)?;
     if args.sim == Sim::Mujoco {
         return simulate(&args, given, &world, &root, shell);
     }

@@ -29,7 +29,7 @@ pub fn exec(args: Args, shell: &mut Shell) -> anyhow::Result<()> {
         _ => install::default_prefix().context("cannot find a home directory; pass --prefix DIR")?,
     };
     let prefix = std::path::absolute(&prefix).unwrap_or(prefix);
-    match sdk::prepare(&prefix)? {
+    match sdk::prepare(&prefix, shell)? {
         Outcome::Installed => shell.status("Installed", &format!("OPEN-R SDK root at {}", prefix.display())),
         Outcome::UpToDate => shell.status("Fresh", &format!("OPEN-R SDK root at {}", prefix.display())),
     }

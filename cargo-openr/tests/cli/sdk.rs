@@ -44,7 +44,8 @@ fn second_install_is_a_no_op_and_prints_the_path() {
     let out = cargo_openr(&["openr", "sdk", "install", "--prefix", root.to_str().unwrap()]);
     assert!(out.status.success());
     assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), root.to_str().unwrap());
-    assert!(String::from_utf8_lossy(&out.stderr).contains("Fresh"), "{}", String::from_utf8_lossy(&out.stderr));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("Fresh") && !err.contains("Installing"), "{err}");
     let after = fs::metadata(root.join("OPEN_R/lib/libOPENR.a")).unwrap().modified().unwrap();
     assert_eq!(before, after, "an up-to-date root is not rewritten");
 }
@@ -69,4 +70,7 @@ fn default_prefix_follows_xdg_data_home() {
     let expected = home.path().join("cargo-openr/OPEN_R_SDK");
     assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), expected.to_str().unwrap());
     assert!(expected.join("OPEN_R/bin/mkbin").exists());
+    // The minute or two of building the root is announced, not silent.
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("Installing") && err.contains("(first use;"), "{err}");
 }
