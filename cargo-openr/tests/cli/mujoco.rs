@@ -318,11 +318,15 @@ fn simulator_errors_are_clear_and_nothing_hangs() {
 
 /// The Python that `cargo openr run --sim mujoco` uses (ops/sim.rs python()).
 fn sim_python() -> std::path::PathBuf {
+    // As `ops::sim::python` looks for it (and tools/deps.sh makes it): $OPENR_PYTHON,
+    // else the venv under $XDG_CACHE_HOME (~/.cache), else python3.
     if let Some(p) = std::env::var_os("OPENR_PYTHON").filter(|p| !p.is_empty()) {
         return p.into();
     }
-    let venv = Path::new(&std::env::var_os("HOME").unwrap()).join(".cache/cargo-openr/mujoco-venv/bin/python");
-    if venv.exists() {
+    let cache = std::env::var_os("XDG_CACHE_HOME").filter(|v| !v.is_empty()).map(std::path::PathBuf::from);
+    let cache = cache.unwrap_or_else(|| Path::new(&std::env::var_os("HOME").unwrap()).join(".cache"));
+    let venv = cache.join("cargo-openr/mujoco-venv/bin/python");
+    if venv.is_file() {
         venv
     } else {
         "python3".into()
