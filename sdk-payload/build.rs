@@ -27,8 +27,9 @@ fn main() {
             collect(&dir, &dir, &mut files);
         }
         if name == "SIM" {
-            // The simulator only: Python sources and MuJoCo models, not the notes or caches.
-            files.retain(|(rel, _)| !rel.contains('/') && (rel.ends_with(".py") || rel.ends_with(".xml")));
+            // The simulator only: Python sources and MuJoCo models, not the notes, caches
+            // or tests.
+            files.retain(|(rel, _)| !rel.contains('/') && !rel.starts_with("test_") && (rel.ends_with(".py") || rel.ends_with(".xml")));
             let codec = Path::new(&manifest).join("../tools/robot_peer.py");
             println!("cargo:rerun-if-changed={}", codec.display());
             files.push(("robot_peer.py".into(), codec.canonicalize().unwrap().to_string_lossy().into_owned()));

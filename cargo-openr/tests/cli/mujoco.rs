@@ -392,3 +392,20 @@ fn peer_answered_with(reply: Option<&[u8]>) -> String {
     assert!(!err.contains("Traceback"), "{err}");
     err
 }
+
+/// The peer's buffered reader (sim/mujoco/wire.py) against a real socket pair: split
+/// messages, compaction, growth past 64 KiB, bad header, EOF (sim/mujoco/test_wire.py;
+/// plain Python, no MuJoCo needed).
+#[test]
+fn the_peer_reads_the_protocol_from_any_split_of_the_stream() {
+    let repo = crate::support::repo();
+    let out = std::process::Command::new("python3")
+        .args(["-m", "unittest", "-v", "sim/mujoco/test_wire.py"])
+        .current_dir(&repo)
+        .env("PYTHONPATH", format!("{}:{}", repo.join("sim/mujoco").display(), repo.join("tools").display()))
+        .output()
+        .expect("python3 runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(err.contains("Ran 5 tests"), "{err}");
+}
