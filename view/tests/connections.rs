@@ -81,8 +81,10 @@ fn header<'a>(head: &'a str, name: &str) -> Option<&'a str> {
     head.lines().find_map(|l| l.split_once(':').filter(|(k, _)| k.trim().eq_ignore_ascii_case(name)).map(|(_, v)| v.trim()))
 }
 
+/// One GET, in one write (`write!` would send it in pieces, each waiting for the
+/// last one's acknowledgement).
 fn get(s: &mut TcpStream, addr: SocketAddr, path: &str) {
-    write!(s, "GET {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: keep-alive\r\nAccept: */*\r\n\r\n").unwrap();
+    s.write_all(format!("GET {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: keep-alive\r\nAccept: */*\r\n\r\n").as_bytes()).unwrap();
 }
 
 /// Opens `n` connections in a burst, asks `path` on the first `n - 1` and reads their
