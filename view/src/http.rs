@@ -82,19 +82,11 @@ pub(crate) fn serve(listener: TcpListener, limits: Limits, handler: Handler) -> 
     Ok(())
 }
 
-/// One connection counted while it lives.
-struct Counted(Arc<AtomicUsize>);
-
-impl Drop for Counted {
-    fn drop(&mut self) {
-        self.0.fetch_sub(1, Ordering::SeqCst);
-    }
-}
-
 fn accept(listener: TcpListener, limits: Limits, handler: Handler) {
+    // Connections being served; only this thread adds to it.
     let open = Arc::new(AtomicUsize::new(0));
     loop {
-        let mut stream = match listener.accept() {
+        let stream = match listener.accept() {
             Ok((s, _)) => s,
             Err(_) => {
                 // Out of descriptors, or a connection reset before it was taken:
@@ -103,22 +95,35 @@ fn accept(listener: TcpListener, limits: Limits, handler: Handler) {
                 continue;
             }
         };
-        if open.fetch_add(1, Ordering::SeqCst) >= limits.connections {
-            let counted = Counted(open.clone());
+        if open.load(Ordering::SeqCst) >= limits.connections {
             // Answered before its request is read: the client may not have sent it yet.
             let _ = stream.set_write_timeout(Some(Duration::from_secs(1)));
             let busy = Reply::text(format!("the view serves at most {} connections at once: close one\n", limits.connections)).status(503);
-            let _ = write_reply(&mut stream, &busy, true);
+            let _ = write_reply(&stream, &busy, true);
             let _ = stream.shutdown(Shutdown::Write);
-            drop(counted);
             continue;
         }
-        let (counted, handler) = (Counted(open.clone()), handler.clone());
-        // A thread that cannot start drops its connection (and its count).
+        open.fetch_add(1, Ordering::SeqCst);
+        let (place, handler) = (Place(open.clone()), handler.clone());
+        // A thread that cannot start drops the connection, and gives its place back.
         let _ = std::thread::Builder::new().name("openr-view-conn".into()).spawn(move || {
-            let _counted = counted;
-            connection(stream, limits, &*handler);
+            let close = connection(&stream, limits, &*handler);
+            // Its place is given back before the client can see it closed.
+            drop(place);
+            if close == Close::Linger {
+                linger(&stream);
+            }
         });
+    }
+}
+
+/// A connection's place among [`Limits::connections`], given back when dropped (also
+/// when its thread panics or cannot start).
+struct Place(Arc<AtomicUsize>);
+
+impl Drop for Place {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, Ordering::SeqCst);
     }
 }
 
@@ -136,41 +141,55 @@ impl From<io::Error> for Stop {
     }
 }
 
-fn connection(stream: TcpStream, limits: Limits, handler: &(dyn Fn(&Request) -> Reply + Send + Sync)) {
+/// How a connection is closed once its requests are over.
+#[derive(PartialEq)]
+enum Close {
+    /// At once: the client is gone.
+    Now,
+    /// After an answer that the client must still read: [`linger`].
+    Linger,
+}
+
+/// Answers the connection's requests until it is to be closed.
+fn connection(stream: &TcpStream, limits: Limits, handler: &(dyn Fn(&Request) -> Reply + Send + Sync)) -> Close {
     let setup = stream.set_read_timeout(Some(limits.idle)).and(stream.set_write_timeout(Some(limits.idle))).and(stream.set_nodelay(true));
-    let Ok(reader) = setup.and_then(|_| stream.try_clone()) else { return };
-    let (mut reader, mut writer) = (BufReader::new(reader), stream);
+    if setup.is_err() {
+        return Close::Now;
+    }
+    let mut reader = BufReader::new(stream);
     loop {
-        match read_request(&mut reader, &mut writer, limits) {
+        match read_request(&mut reader, stream, limits) {
             Ok(req) => {
                 let reply = handler(&req);
-                if write_reply(&mut writer, &reply, !req.keep_alive).is_err() || !req.keep_alive {
-                    break;
+                if write_reply(stream, &reply, !req.keep_alive).is_err() {
+                    return Close::Now;
+                }
+                if !req.keep_alive {
+                    return Close::Linger;
                 }
             }
-            Err(Stop::Gone) => return,
+            Err(Stop::Gone) => return Close::Now,
             Err(Stop::Refuse(code, why)) => {
-                let _ = write_reply(&mut writer, &Reply::text(format!("{why}\n")).status(code), true);
-                break;
+                let _ = write_reply(stream, &Reply::text(format!("{why}\n")).status(code), true);
+                return Close::Linger;
             }
         }
     }
-    linger(&mut reader, &writer);
 }
 
 /// Closes after an answer so that the client reads it: the write side first, then
 /// what the client still sends is read and dropped for a moment (closing with unread
 /// data would reset the connection and could lose the answer).
-fn linger(reader: &mut BufReader<TcpStream>, writer: &TcpStream) {
-    let _ = writer.shutdown(Shutdown::Write);
+fn linger(mut stream: &TcpStream) {
+    let _ = stream.shutdown(Shutdown::Write);
     let end = Instant::now() + Duration::from_secs(1);
     let mut sink = [0u8; 4096];
     let mut left = 256 * 1024usize;
     while let Some(wait) = end.checked_duration_since(Instant::now()).filter(|w| !w.is_zero()) {
-        if writer.set_read_timeout(Some(wait)).is_err() {
+        if stream.set_read_timeout(Some(wait)).is_err() {
             return;
         }
-        match reader.read(&mut sink) {
+        match stream.read(&mut sink) {
             Ok(n @ 1..) if n < left => left -= n,
             _ => return,
         }
@@ -178,7 +197,7 @@ fn linger(reader: &mut BufReader<TcpStream>, writer: &TcpStream) {
 }
 
 /// The next request on the connection, its body read whole.
-fn read_request(reader: &mut BufReader<TcpStream>, writer: &mut TcpStream, limits: Limits) -> Result<Request, Stop> {
+fn read_request(reader: &mut BufReader<&TcpStream>, mut writer: &TcpStream, limits: Limits) -> Result<Request, Stop> {
     let head = read_head(reader, limits.head)?;
     let mut headers = [httparse::EMPTY_HEADER; MAX_HEADERS];
     let mut parsed = httparse::Request::new(&mut headers);
@@ -193,7 +212,11 @@ fn read_request(reader: &mut BufReader<TcpStream>, writer: &mut TcpStream, limit
     };
     let (mut length, mut close, mut keep_alive, mut expect_continue) = (None::<usize>, false, false, false);
     for h in parsed.headers.iter() {
-        let value = std::str::from_utf8(h.value).map_err(|_| Stop::Refuse(400, format!("the {} header field is not text", h.name)))?.trim();
+        const USED: [&str; 4] = ["content-length", "transfer-encoding", "connection", "expect"];
+        if !USED.iter().any(|u| h.name.eq_ignore_ascii_case(u)) {
+            continue;
+        }
+        let value = std::str::from_utf8(h.value).map_err(|_| Stop::Refuse(400, format!("a malformed request: its {} is not text", h.name)))?.trim();
         let tokens = || value.split(',').map(str::trim);
         if h.name.eq_ignore_ascii_case("content-length") {
             let n = Some(value).filter(|v| !v.is_empty() && v.bytes().all(|b| b.is_ascii_digit())).and_then(|v| v.parse().ok());
@@ -231,7 +254,7 @@ fn read_request(reader: &mut BufReader<TcpStream>, writer: &mut TcpStream, limit
 
 /// The request head: its lines up to the empty one that ends it (empty lines before
 /// the request line skipped, as RFC 9112 allows).
-fn read_head(reader: &mut BufReader<TcpStream>, max: usize) -> Result<Vec<u8>, Stop> {
+fn read_head(reader: &mut BufReader<&TcpStream>, max: usize) -> Result<Vec<u8>, Stop> {
     let mut head = Vec::new();
     loop {
         let room = (max + 1).saturating_sub(head.len()) as u64;
@@ -266,7 +289,7 @@ fn reason(code: u16) -> &'static str {
     }
 }
 
-fn write_reply(stream: &mut TcpStream, reply: &Reply, close: bool) -> io::Result<()> {
+fn write_reply(mut stream: &TcpStream, reply: &Reply, close: bool) -> io::Result<()> {
     let mut out = format!("HTTP/1.1 {} {}\r\n", reply.status, reason(reply.status));
     if let Some(kind) = &reply.content_type {
         out += &format!("Content-Type: {kind}\r\n");

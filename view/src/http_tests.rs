@@ -60,6 +60,9 @@ fn keep_alive_answers_each_request_on_one_connection_pipelined_too() {
     assert!(head.contains("Content-Type: text/plain; charset=UTF-8\r\n") && head.contains("Cache-Control: no-store\r\n"), "{head}");
     assert!(!head.contains("Connection: close"), "{head}");
     assert_eq!(body, "GET /a?x=1 ");
+    // a header field the server does not use may hold any bytes
+    s.write_all(b"GET /r HTTP/1.1\r\nReferer: caf\xe9\r\n\r\n").unwrap();
+    assert_eq!(answer(&mut s).1, "GET /r ");
     // two at once, the second with a body
     s.write_all(b"GET /b HTTP/1.1\r\n\r\nPOST /c HTTP/1.1\r\nContent-Length: 5\r\n\r\nhello").unwrap();
     assert_eq!(answer(&mut s).1, "GET /b ");
@@ -166,7 +169,8 @@ fn an_idle_connection_is_closed_and_frees_its_place() {
     assert!(ended(&mut idle), "closed once idle");
     let took = start.elapsed();
     assert!(took >= Duration::from_millis(250) && took < Duration::from_secs(10), "closed after {took:?}");
-    // half a request, then silence: closed too, without an answer
+    // its place is free (the only one): half a request, then silence, closed too
+    // without an answer
     let mut half = connect(addr);
     half.write_all(b"GET / HTTP/1.1\r\nHost:").unwrap();
     assert!(ended(&mut half));
