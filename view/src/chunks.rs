@@ -7,11 +7,10 @@
 //! picture N, `?t=MS` the newest one taken by then; `/robot/K/speaker.wav` the sound;
 //! `/field.png?t=MS` a world's field camera's newest picture by then.
 //! A one-robot recording answers the same without `/robot/K` (robot 0).
-use serde_json::{json, Value};
-use tiny_http::{Method, Request, Response};
-
+use crate::http::{Reply, Request};
 use crate::replay::Replay;
-use crate::server::{header, json as json_reply, not_found, page, script_json, Answer};
+use crate::server::{json as json_reply, not_found, page, script_json};
+use serde_json::{json, Value};
 
 /// Moments per chunk: about 2 s of a run (a moment every 32 ms sensor frame), ~0.3 MB.
 pub const CHUNK: usize = 64;
@@ -62,49 +61,46 @@ fn index(rec: &Replay, k: usize, query: &str) -> Value {
     })
 }
 
-pub(crate) fn answer(rec: &Replay, req: Request) -> Answer {
-    let url = req.url().to_string();
-    let (path, query) = url.split_once('?').unwrap_or((&url, ""));
+pub(crate) fn answer(rec: &Replay, req: &Request) -> Reply {
+    let url = req.url.as_str();
+    let (path, query) = url.split_once('?').unwrap_or((url, ""));
     let (k, rest) = crate::world::robot_path(path);
     let file = |p: &std::path::Path, kind: &str| match std::fs::read(p) {
-        Ok(bytes) => Response::from_data(bytes).with_header(header("Content-Type", kind)),
-        Err(e) => Response::from_string(format!("{}: {e}\n", p.display())).with_status_code(500),
+        Ok(bytes) => Reply::data(bytes).kind(kind),
+        Err(e) => Reply::text(format!("{}: {e}\n", p.display())).status(500),
     };
     if path == "/field.png" {
         // The field camera's newest picture by `?t=MS`.
         let t = param::<u64>(query, "t").unwrap_or(0);
         let pictures = rec.world.as_ref().map_or(&[][..], |w| &w.pictures[..]);
-        let res = match pictures.partition_point(|(pt, _)| *pt <= t).checked_sub(1) {
+        return match pictures.partition_point(|(pt, _)| *pt <= t).checked_sub(1) {
             Some(i) => file(&pictures[i].1, "image/png"),
-            None => not_found(&url),
+            None => not_found(url),
         };
-        return Ok((req, res));
     }
     let Some(robot) = rec.robots.get(k) else {
-        let res = not_found(path);
-        return Ok((req, res));
+        return not_found(path);
     };
-    let res = match (req.method(), rest.as_str()) {
-        (Method::Get, "/") => page("null", &script_json(&index(rec, param(query, "robot").filter(|k| *k < rec.robots.len()).unwrap_or(0), query)), "null"),
-        (Method::Get, "/chunk") => match param(query, "n").and_then(|c| chunk(rec, k, c)) {
+    match (req.method.as_str(), rest.as_str()) {
+        ("GET", "/") => page("null", &script_json(&index(rec, param(query, "robot").filter(|k| *k < rec.robots.len()).unwrap_or(0), query)), "null"),
+        ("GET", "/chunk") => match param(query, "n").and_then(|c| chunk(rec, k, c)) {
             Some(v) => json_reply(&v),
-            None => not_found(&url),
+            None => not_found(url),
         },
-        (Method::Get, "/camera.png") => {
+        ("GET", "/camera.png") => {
             let n = match param::<u64>(query, "t") {
                 Some(t) => robot.picture_times.partition_point(|p| *p <= t),
                 None => param(query, "n").unwrap_or(0),
             };
             match n.checked_sub(1).and_then(|i| robot.pictures.get(i)) {
                 Some(p) => file(p, "image/png"),
-                None => not_found(&url),
+                None => not_found(url),
             }
         }
-        (Method::Get, "/speaker.wav") => match &robot.speaker {
+        ("GET", "/speaker.wav") => match &robot.speaker {
             Some(p) => file(p, "audio/wav"),
             None => not_found(path),
         },
         _ => not_found(path),
-    };
-    Ok((req, res))
+    }
 }

@@ -11,6 +11,7 @@
 //! every robot of the world and the field.
 mod cdt;
 mod chunks;
+mod http;
 pub mod moments;
 pub mod record;
 pub mod replay;

@@ -54,7 +54,7 @@ impl Builder {
             Some((open_t, _)) if open_t == t => {}
             _ => {
                 self.close();
-                if self.ends.len() % CHUNK == 0 {
+                if self.ends.len().is_multiple_of(CHUNK) {
                     self.starts.push(self.now.clone());
                 }
             }

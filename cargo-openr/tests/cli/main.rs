@@ -31,4 +31,5 @@ mod tools;
 mod view;
 mod view_2xx;
 mod view_cdt;
+mod view_conn;
 mod world_view;
