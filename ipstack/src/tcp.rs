@@ -14,6 +14,11 @@ use super::{sys, EndpointId, NetResult, Pending};
 /// tight loop (3.4).
 const LISTEN_RETRY_DELAY: Duration = Duration::from_secs(1);
 
+/// How long a listener whose accept failed (no descriptor left: EMFILE, ENFILE) waits
+/// before it tries again: the connection stays queued, but its readiness edge has passed,
+/// so no event would come for it until another connection.
+const ACCEPT_RETRY_DELAY: Duration = Duration::from_millis(50);
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 enum TcpPhase {
     #[default]
@@ -68,6 +73,10 @@ pub struct TcpEp {
 pub struct Listener {
     fd: OwnedFd,
     waiters: VecDeque<EndpointId>,
+    /// When to try accepting again after a failed accept.
+    retry: Option<Instant>,
+    /// The failure was said (once until an accept gets through again).
+    said: bool,
 }
 
 impl TcpEp {
@@ -224,7 +233,7 @@ fn shared_listener(listeners: &mut HashMap<(u32, u16), Listener>, poller: &Polle
         cfg.report.warn(&format!("net: cannot watch a listening socket (epoll_ctl: {})", std::io::Error::from_raw_os_error(e)));
         return Err(tcp::FAIL);
     }
-    listeners.insert(key, Listener { fd, waiters: VecDeque::new() });
+    listeners.insert(key, Listener { fd, waiters: VecDeque::new(), retry: None, said: false });
     Ok(key)
 }
 
@@ -244,8 +253,20 @@ pub(super) fn accept_ready(st: &mut State, cfg: &NetConfig, key: (u32, u16)) {
         let conn = match sys::accept(l.fd.as_raw_fd()) {
             Ok(c) => c,
             Err(libc::EINTR | libc::ECONNABORTED) => continue,
-            Err(_) => return, // EAGAIN: nobody yet
+            Err(libc::EAGAIN) => return, // nobody yet
+            Err(e) => {
+                // The waiter stays first in line; the poll thread tries again later.
+                let at = Instant::now() + ACCEPT_RETRY_DELAY;
+                l.retry = Some(at);
+                if !std::mem::replace(&mut l.said, true) {
+                    let err = std::io::Error::from_raw_os_error(e);
+                    st.host.warn(&format!("net: cannot accept a connection on host port {} ({err}); trying again", key.1));
+                }
+                st.schedule(at);
+                return;
+            }
         };
+        l.said = false;
         l.waiters.pop_front();
         let (la, _) = sys::local_addr(conn.as_raw_fd());
         let (fa, fp) = sys::peer_addr(conn.as_raw_fd());
@@ -261,6 +282,22 @@ pub(super) fn accept_ready(st: &mut State, cfg: &NetConfig, key: (u32, u16)) {
         (r.faddr, r.fport) = robot_peer(cfg, fa, fp);
         p.complete(r);
     }
+}
+
+/// Tries the listeners whose accept failed again once their delay is over; the earliest
+/// retry still to come.
+pub(super) fn retry_accepts(st: &mut State, cfg: &NetConfig, now: Instant) -> Option<Instant> {
+    let mut due = Vec::new();
+    for (&key, l) in st.listeners.iter_mut() {
+        if l.retry.is_some_and(|at| at <= now) {
+            l.retry = None;
+            due.push(key);
+        }
+    }
+    for key in due {
+        accept_ready(st, cfg, key);
+    }
+    st.listeners.values().filter_map(|l| l.retry).min()
 }
 
 /// Starts a connect; true when it is pending (the caller then makes progress, which
