@@ -91,6 +91,12 @@ impl TcpEp {
         self.listen_error.map(|(at, _)| at)
     }
 
+    /// Whether the socket was ever put in the epoll set.
+    #[cfg(test)]
+    pub(super) fn ever_armed(&self) -> bool {
+        self.armed.in_set()
+    }
+
     /// A new socket (or none): not in the epoll set yet.
     fn attach(&mut self, fd: Option<OwnedFd>) {
         self.fd = fd;
@@ -300,8 +306,8 @@ pub(super) fn retry_accepts(st: &mut State, cfg: &NetConfig, now: Instant) -> Op
     st.listeners.values().filter_map(|l| l.retry).min()
 }
 
-/// Starts a connect; true when it is pending (the caller then makes progress, which
-/// finishes it or arms the socket).
+/// Starts a connect, answered at once if the socket connected at once; true when it is
+/// pending (the caller then makes progress, which finishes it or arms the socket).
 fn connect(t: &mut TcpEp, cfg: &NetConfig, p: Pending) -> bool {
     let req = p.req;
     if t.phase != TcpPhase::New {
@@ -322,11 +328,16 @@ fn connect(t: &mut TcpEp, cfg: &NetConfig, p: Pending) -> bool {
     t.robot_lport = bind_source_port(cfg, &fd, robot_lport);
     let (daddr, dport) = cfg.remote(req.addr, req.port as u16, "TCP connect");
     match sys::connect(fd.as_raw_fd(), daddr, dport) {
-        Ok(_) => {
+        Ok(at_once) => {
+            let raw = fd.as_raw_fd();
             t.attach(Some(fd));
             t.phase = TcpPhase::Connecting;
-            t.connect = Some(p);
-            true
+            if at_once {
+                connected(t, raw, p);
+            } else {
+                t.connect = Some(p);
+            }
+            !at_once
         }
         Err(e) => {
             p.fail(tcp_error(e));
@@ -488,18 +499,7 @@ fn finish_connect(t: &mut TcpEp, fd: RawFd) -> bool {
     let Some(p) = t.connect.take() else { return false };
     match sys::so_error(fd) {
         0 => {
-            t.phase = TcpPhase::Active;
-            let (la, lp) = sys::local_addr(fd);
-            let mut r = NetResult::new(&p.req, tcp::SUCCESS);
-            r.laddr = la;
-            r.lport = if t.robot_lport != 0 { t.robot_lport.into() } else { lp.into() };
-            if t.robot_lport == 0 {
-                t.robot_lport = lp;
-            }
-            // The robot's view: the address it connected to (before --net-map).
-            r.faddr = p.req.addr;
-            r.fport = p.req.port;
-            p.complete(r);
+            connected(t, fd, p);
             true
         }
         e => {
@@ -509,6 +509,22 @@ fn finish_connect(t: &mut TcpEp, fd: RawFd) -> bool {
             false
         }
     }
+}
+
+/// Answers a Connect whose socket is connected: the endpoint is active.
+fn connected(t: &mut TcpEp, fd: RawFd, p: Pending) {
+    t.phase = TcpPhase::Active;
+    let (la, lp) = sys::local_addr(fd);
+    let mut r = NetResult::new(&p.req, tcp::SUCCESS);
+    r.laddr = la;
+    r.lport = if t.robot_lport != 0 { t.robot_lport.into() } else { lp.into() };
+    if t.robot_lport == 0 {
+        t.robot_lport = lp;
+    }
+    // The robot's view: the address it connected to (before --net-map).
+    r.faddr = p.req.addr;
+    r.fport = p.req.port;
+    p.complete(r);
 }
 
 /// Writes what the socket takes of a pending Send; true when the Send was answered.
