@@ -320,9 +320,16 @@ pub fn poll_loop(net: &'static Net) {
             match Token::decode(ev.u64) {
                 Token::Wake => net.poller.drain_wake(),
                 Token::Listener(key) => super::tcp::accept_ready(&mut st, &net.config, key),
-                Token::Ep(id) => match st.eps.get(&id) {
-                    Some(Endpoint::Tcp(_)) => super::tcp::on_event(&mut st, id),
-                    Some(Endpoint::Udp(_)) => super::udp::on_event(&mut st, &net.config, id),
+                // The socket reported readiness and is disarmed: progress.
+                Token::Ep(id) => match st.eps.get_mut(&id) {
+                    Some(Endpoint::Tcp(t)) => {
+                        t.fired();
+                        super::tcp::progress(&mut st, id);
+                    }
+                    Some(Endpoint::Udp(u)) => {
+                        u.fired();
+                        super::udp::progress(&mut st, &net.config, id);
+                    }
                     _ => {}
                 },
             }

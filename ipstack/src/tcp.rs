@@ -97,6 +97,11 @@ impl TcpEp {
         self.armed.in_set()
     }
 
+    /// Its socket reported readiness: the kernel disarmed it (one-shot).
+    pub(super) fn fired(&mut self) {
+        self.armed.fired();
+    }
+
     /// A new socket (or none): not in the epoll set yet.
     fn attach(&mut self, fd: Option<OwnedFd>) {
         self.fd = fd;
@@ -425,26 +430,16 @@ fn address(t: &mut TcpEp, cfg: &NetConfig, p: Pending) {
     p.complete(r)
 }
 
-/// The socket of endpoint `id` reported readiness (and is disarmed): progress.
-pub(super) fn on_event(st: &mut State, id: EndpointId) {
-    if let Some(t) = st.tcp(id) {
-        t.armed.fired();
-    }
-    progress(st, id);
-}
-
 /// Advances everything pending on a TCP endpoint without blocking, then arms its socket
-/// for what still waits.
+/// for what still waits. If the epoll set refuses, that would wait forever: it fails
+/// instead, and a warning says why.
 pub(super) fn progress(st: &mut State, id: EndpointId) {
-    advance(st, id);
-    arm(st, id);
-}
-
-/// Arms the socket of endpoint `id` for what its parked operations wait on. If the epoll
-/// set refuses, they would wait forever: they fail instead, and a warning says why.
-fn arm(st: &mut State, id: EndpointId) {
     let poller = st.poller;
-    let Some(t) = st.tcp(id) else { return };
+    let Some(t) = tcp_in(&mut st.eps, id) else { return };
+    if let Some(close) = advance(t) {
+        return finish_close(st, id, close, false);
+    }
+    // A failed connect has closed the socket.
     let Some(fd) = t.fd.as_ref().map(|f| f.as_raw_fd()) else { return };
     let mut want = 0;
     if t.recv.is_some() {
@@ -474,19 +469,20 @@ fn arm(st: &mut State, id: EndpointId) {
     }
 }
 
-fn advance(st: &mut State, id: EndpointId) {
-    let Some(t) = st.tcp(id) else { return };
-    let Some(fd) = t.fd.as_ref().map(|f| f.as_raw_fd()) else { return };
+/// Connects, sends and receives as far as the socket allows; a graceful Close that is
+/// due now (its Send was answered).
+fn advance(t: &mut TcpEp) -> Option<Pending> {
+    let fd = t.fd.as_ref()?.as_raw_fd();
     if t.phase == TcpPhase::Connecting && !finish_connect(t, fd) {
-        return;
+        return None;
     }
     if push_send(t, fd) {
         if let Some(close) = t.closing.take() {
-            finish_close(st, id, close, false);
-            return;
+            return Some(close);
         }
     }
     pull_receive(t, fd);
+    None
 }
 
 /// Answers a pending Connect once the socket is writable; false while it is not done
