@@ -9,7 +9,9 @@
 //! caller's EAGAIN and the arming is not lost.
 //!
 //! A listening socket is added once, edge-triggered: connections that come while no
-//! Listen waits stay queued and are accepted by the next Listen at once.
+//! Listen waits stay queued and are accepted by the next Listen at once; one whose accept
+//! failed (no descriptor left) is tried again on the poll thread's timer, as its edge has
+//! passed.
 use std::io;
 use std::os::fd::{AsRawFd, OwnedFd, RawFd};
 
