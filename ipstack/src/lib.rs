@@ -25,6 +25,8 @@ mod poller;
 mod stack;
 mod sys;
 mod tcp;
+#[cfg(test)]
+mod tests;
 mod udp;
 
 use std::ffi::{c_char, c_void, CStr};
@@ -122,7 +124,12 @@ impl Net {
     /// Starts a stack and its poll thread; both live for the rest of the process (a
     /// runtime starts one, on an object's first request).
     pub fn start(opts: &NetOptions, host: Arc<dyn Host>) -> std::io::Result<&'static Net> {
-        let poller: &'static Poller = Box::leak(Box::new(Poller::new()?));
+        Net::start_on(Poller::new()?, opts, host)
+    }
+
+    /// As [`Net::start`], on a given epoll set (the tests give one the kernel refuses).
+    fn start_on(poller: Poller, opts: &NetOptions, host: Arc<dyn Host>) -> std::io::Result<&'static Net> {
+        let poller: &'static Poller = Box::leak(Box::new(poller));
         let net: &'static Net = Box::leak(Box::new(Net {
             state: Mutex::new(State::new(host.clone(), poller)),
             config: NetConfig::new(opts, host.clone()),

@@ -9,7 +9,9 @@
 //! caller's EAGAIN and the arming is not lost.
 //!
 //! A listening socket is added once, edge-triggered: connections that come while no
-//! Listen waits stay queued and are accepted by the next Listen at once.
+//! Listen waits stay queued and are accepted by the next Listen at once; one whose accept
+//! failed (no descriptor left) is tried again on the poll thread's timer, as its edge has
+//! passed.
 use std::io;
 use std::os::fd::{AsRawFd, OwnedFd, RawFd};
 
@@ -64,6 +66,12 @@ impl Armed {
     pub fn fired(&mut self) {
         self.events = 0;
     }
+
+    /// Whether the socket was ever put in the epoll set.
+    #[cfg(test)]
+    pub fn in_set(&self) -> bool {
+        self.in_set
+    }
 }
 
 /// Readable (a Receive, a Listen waits).
@@ -86,6 +94,17 @@ impl Poller {
         // Level-triggered: it stays readable until drained.
         poller.ctl(libc::EPOLL_CTL_ADD, poller.wake.as_raw_fd(), IN, Token::Wake).map_err(io::Error::from_raw_os_error)?;
         Ok(poller)
+    }
+
+    /// A poller whose "epoll set" is an eventfd: every epoll_ctl and epoll_wait on it
+    /// fails (EINVAL), as the tests of those failures want.
+    #[cfg(test)]
+    pub fn refusing() -> io::Result<Poller> {
+        // SAFETY: plain syscalls making fresh descriptors.
+        let ep = sys::owned(unsafe { libc::eventfd(0, libc::EFD_CLOEXEC) }).map_err(io::Error::from_raw_os_error)?;
+        // SAFETY: as above.
+        let wake = sys::owned(unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) }).map_err(io::Error::from_raw_os_error)?;
+        Ok(Poller { ep, wake })
     }
 
     fn ctl(&self, op: libc::c_int, fd: RawFd, events: u32, token: Token) -> Result<(), i32> {

@@ -57,7 +57,8 @@ pub struct State {
     pub(super) host: Arc<dyn Host>,
     /// The poll thread's epoll set, which parked operations arm their sockets in.
     pub(super) poller: &'static Poller,
-    /// The earliest delayed Listen error (may be stale: an early wake-up is harmless).
+    /// The earliest delayed Listen error or accept retry (may be stale: an early wake-up is
+    /// harmless).
     next_deadline: Option<Instant>,
 }
 
@@ -153,7 +154,7 @@ impl State {
         }
     }
 
-    /// Makes the poll thread wake by `at` (a delayed Listen error).
+    /// Makes the poll thread wake by `at` (a delayed Listen error, an accept to retry).
     pub(super) fn schedule(&mut self, at: Instant) {
         if self.next_deadline.is_none_or(|d| at < d) {
             self.next_deadline = Some(at);
@@ -161,8 +162,9 @@ impl State {
         }
     }
 
-    /// Answers the failed Listens whose delay is over; the poll thread's next timeout.
-    fn fire_delayed(&mut self) -> Option<Instant> {
+    /// Answers the failed Listens whose delay is over and retries the failed accepts whose
+    /// delay is; the poll thread's next timeout.
+    fn fire_delayed(&mut self, cfg: &NetConfig) -> Option<Instant> {
         let now = Instant::now();
         if self.next_deadline.is_some_and(|d| d <= now) {
             self.next_deadline = None;
@@ -173,6 +175,9 @@ impl State {
                         self.next_deadline = Some(self.next_deadline.map_or(at, |d| d.min(at)));
                     }
                 }
+            }
+            if let Some(at) = super::tcp::retry_accepts(self, cfg, now) {
+                self.next_deadline = Some(self.next_deadline.map_or(at, |d| d.min(at)));
             }
         }
         self.next_deadline
@@ -315,14 +320,21 @@ pub fn poll_loop(net: &'static Net) {
             match Token::decode(ev.u64) {
                 Token::Wake => net.poller.drain_wake(),
                 Token::Listener(key) => super::tcp::accept_ready(&mut st, &net.config, key),
-                Token::Ep(id) => match st.eps.get(&id) {
-                    Some(Endpoint::Tcp(_)) => super::tcp::on_event(&mut st, id),
-                    Some(Endpoint::Udp(_)) => super::udp::on_event(&mut st, &net.config, id),
+                // The socket reported readiness and is disarmed: progress.
+                Token::Ep(id) => match st.eps.get_mut(&id) {
+                    Some(Endpoint::Tcp(t)) => {
+                        t.fired();
+                        super::tcp::progress(&mut st, id);
+                    }
+                    Some(Endpoint::Udp(u)) => {
+                        u.fired();
+                        super::udp::progress(&mut st, &net.config, id);
+                    }
                     _ => {}
                 },
             }
         }
-        timeout = st.fire_delayed().map_or(-1, |d| d.saturating_duration_since(Instant::now()).as_millis().min(60_000) as i32 + 1);
+        timeout = st.fire_delayed(&net.config).map_or(-1, |d| d.saturating_duration_since(Instant::now()).as_millis().min(60_000) as i32 + 1);
     }
 }
 

@@ -14,6 +14,11 @@ use super::{sys, EndpointId, NetResult, Pending};
 /// tight loop (3.4).
 const LISTEN_RETRY_DELAY: Duration = Duration::from_secs(1);
 
+/// How long a listener whose accept failed (no descriptor left: EMFILE, ENFILE) waits
+/// before it tries again: the connection stays queued, but its readiness edge has passed,
+/// so no event would come for it until another connection.
+const ACCEPT_RETRY_DELAY: Duration = Duration::from_millis(50);
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 enum TcpPhase {
     #[default]
@@ -68,6 +73,10 @@ pub struct TcpEp {
 pub struct Listener {
     fd: OwnedFd,
     waiters: VecDeque<EndpointId>,
+    /// When to try accepting again after a failed accept.
+    retry: Option<Instant>,
+    /// The failure was said (once until an accept gets through again).
+    said: bool,
 }
 
 impl TcpEp {
@@ -80,6 +89,17 @@ impl TcpEp {
     /// When a delayed Listen error is due.
     pub(super) fn listen_due(&self) -> Option<Instant> {
         self.listen_error.map(|(at, _)| at)
+    }
+
+    /// Whether the socket was ever put in the epoll set.
+    #[cfg(test)]
+    pub(super) fn ever_armed(&self) -> bool {
+        self.armed.in_set()
+    }
+
+    /// Its socket reported readiness: the kernel disarmed it (one-shot).
+    pub(super) fn fired(&mut self) {
+        self.armed.fired();
     }
 
     /// A new socket (or none): not in the epoll set yet.
@@ -224,7 +244,7 @@ fn shared_listener(listeners: &mut HashMap<(u32, u16), Listener>, poller: &Polle
         cfg.report.warn(&format!("net: cannot watch a listening socket (epoll_ctl: {})", std::io::Error::from_raw_os_error(e)));
         return Err(tcp::FAIL);
     }
-    listeners.insert(key, Listener { fd, waiters: VecDeque::new() });
+    listeners.insert(key, Listener { fd, waiters: VecDeque::new(), retry: None, said: false });
     Ok(key)
 }
 
@@ -244,8 +264,20 @@ pub(super) fn accept_ready(st: &mut State, cfg: &NetConfig, key: (u32, u16)) {
         let conn = match sys::accept(l.fd.as_raw_fd()) {
             Ok(c) => c,
             Err(libc::EINTR | libc::ECONNABORTED) => continue,
-            Err(_) => return, // EAGAIN: nobody yet
+            Err(libc::EAGAIN) => return, // nobody yet
+            Err(e) => {
+                // The waiter stays first in line; the poll thread tries again later.
+                let at = Instant::now() + ACCEPT_RETRY_DELAY;
+                l.retry = Some(at);
+                if !std::mem::replace(&mut l.said, true) {
+                    let err = std::io::Error::from_raw_os_error(e);
+                    st.host.warn(&format!("net: cannot accept a connection on host port {} ({err}); trying again", key.1));
+                }
+                st.schedule(at);
+                return;
+            }
         };
+        l.said = false;
         l.waiters.pop_front();
         let (la, _) = sys::local_addr(conn.as_raw_fd());
         let (fa, fp) = sys::peer_addr(conn.as_raw_fd());
@@ -263,8 +295,24 @@ pub(super) fn accept_ready(st: &mut State, cfg: &NetConfig, key: (u32, u16)) {
     }
 }
 
-/// Starts a connect; true when it is pending (the caller then makes progress, which
-/// finishes it or arms the socket).
+/// Tries the listeners whose accept failed again once their delay is over; the earliest
+/// retry still to come.
+pub(super) fn retry_accepts(st: &mut State, cfg: &NetConfig, now: Instant) -> Option<Instant> {
+    let mut due = Vec::new();
+    for (&key, l) in st.listeners.iter_mut() {
+        if l.retry.is_some_and(|at| at <= now) {
+            l.retry = None;
+            due.push(key);
+        }
+    }
+    for key in due {
+        accept_ready(st, cfg, key);
+    }
+    st.listeners.values().filter_map(|l| l.retry).min()
+}
+
+/// Starts a connect, answered at once if the socket connected at once; true when it is
+/// pending (the caller then makes progress, which finishes it or arms the socket).
 fn connect(t: &mut TcpEp, cfg: &NetConfig, p: Pending) -> bool {
     let req = p.req;
     if t.phase != TcpPhase::New {
@@ -285,11 +333,16 @@ fn connect(t: &mut TcpEp, cfg: &NetConfig, p: Pending) -> bool {
     t.robot_lport = bind_source_port(cfg, &fd, robot_lport);
     let (daddr, dport) = cfg.remote(req.addr, req.port as u16, "TCP connect");
     match sys::connect(fd.as_raw_fd(), daddr, dport) {
-        Ok(_) => {
+        Ok(at_once) => {
+            let raw = fd.as_raw_fd();
             t.attach(Some(fd));
             t.phase = TcpPhase::Connecting;
-            t.connect = Some(p);
-            true
+            if at_once {
+                connected(t, raw, p);
+            } else {
+                t.connect = Some(p);
+            }
+            !at_once
         }
         Err(e) => {
             p.fail(tcp_error(e));
@@ -377,26 +430,16 @@ fn address(t: &mut TcpEp, cfg: &NetConfig, p: Pending) {
     p.complete(r)
 }
 
-/// The socket of endpoint `id` reported readiness (and is disarmed): progress.
-pub(super) fn on_event(st: &mut State, id: EndpointId) {
-    if let Some(t) = st.tcp(id) {
-        t.armed.fired();
-    }
-    progress(st, id);
-}
-
 /// Advances everything pending on a TCP endpoint without blocking, then arms its socket
-/// for what still waits.
+/// for what still waits. If the epoll set refuses, that would wait forever: it fails
+/// instead, and a warning says why.
 pub(super) fn progress(st: &mut State, id: EndpointId) {
-    advance(st, id);
-    arm(st, id);
-}
-
-/// Arms the socket of endpoint `id` for what its parked operations wait on. If the epoll
-/// set refuses, they would wait forever: they fail instead, and a warning says why.
-fn arm(st: &mut State, id: EndpointId) {
     let poller = st.poller;
-    let Some(t) = st.tcp(id) else { return };
+    let Some(t) = tcp_in(&mut st.eps, id) else { return };
+    if let Some(close) = advance(t) {
+        return finish_close(st, id, close, false);
+    }
+    // A failed connect has closed the socket.
     let Some(fd) = t.fd.as_ref().map(|f| f.as_raw_fd()) else { return };
     let mut want = 0;
     if t.recv.is_some() {
@@ -426,19 +469,20 @@ fn arm(st: &mut State, id: EndpointId) {
     }
 }
 
-fn advance(st: &mut State, id: EndpointId) {
-    let Some(t) = st.tcp(id) else { return };
-    let Some(fd) = t.fd.as_ref().map(|f| f.as_raw_fd()) else { return };
+/// Connects, sends and receives as far as the socket allows; a graceful Close that is
+/// due now (its Send was answered).
+fn advance(t: &mut TcpEp) -> Option<Pending> {
+    let fd = t.fd.as_ref()?.as_raw_fd();
     if t.phase == TcpPhase::Connecting && !finish_connect(t, fd) {
-        return;
+        return None;
     }
     if push_send(t, fd) {
         if let Some(close) = t.closing.take() {
-            finish_close(st, id, close, false);
-            return;
+            return Some(close);
         }
     }
     pull_receive(t, fd);
+    None
 }
 
 /// Answers a pending Connect once the socket is writable; false while it is not done
@@ -451,18 +495,7 @@ fn finish_connect(t: &mut TcpEp, fd: RawFd) -> bool {
     let Some(p) = t.connect.take() else { return false };
     match sys::so_error(fd) {
         0 => {
-            t.phase = TcpPhase::Active;
-            let (la, lp) = sys::local_addr(fd);
-            let mut r = NetResult::new(&p.req, tcp::SUCCESS);
-            r.laddr = la;
-            r.lport = if t.robot_lport != 0 { t.robot_lport.into() } else { lp.into() };
-            if t.robot_lport == 0 {
-                t.robot_lport = lp;
-            }
-            // The robot's view: the address it connected to (before --net-map).
-            r.faddr = p.req.addr;
-            r.fport = p.req.port;
-            p.complete(r);
+            connected(t, fd, p);
             true
         }
         e => {
@@ -472,6 +505,22 @@ fn finish_connect(t: &mut TcpEp, fd: RawFd) -> bool {
             false
         }
     }
+}
+
+/// Answers a Connect whose socket is connected: the endpoint is active.
+fn connected(t: &mut TcpEp, fd: RawFd, p: Pending) {
+    t.phase = TcpPhase::Active;
+    let (la, lp) = sys::local_addr(fd);
+    let mut r = NetResult::new(&p.req, tcp::SUCCESS);
+    r.laddr = la;
+    r.lport = if t.robot_lport != 0 { t.robot_lport.into() } else { lp.into() };
+    if t.robot_lport == 0 {
+        t.robot_lport = lp;
+    }
+    // The robot's view: the address it connected to (before --net-map).
+    r.faddr = p.req.addr;
+    r.fport = p.req.port;
+    p.complete(r);
 }
 
 /// Writes what the socket takes of a pending Send; true when the Send was answered.

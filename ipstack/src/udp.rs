@@ -23,6 +23,11 @@ pub struct UdpEp {
 }
 
 impl UdpEp {
+    /// Its socket reported readiness: the kernel disarmed it (one-shot).
+    pub(super) fn fired(&mut self) {
+        self.armed.fired();
+    }
+
     /// Whether a pending Send or Receive reads or writes `[base, base+size)`.
     pub(super) fn uses_buffer(&self, base: usize, size: usize) -> bool {
         let inside = |p: usize| p >= base && p < base + size;
@@ -179,14 +184,6 @@ fn address(u: &mut UdpEp, cfg: &NetConfig, p: Pending) {
         (r.faddr, r.fport) = robot_peer(cfg, fa, fp);
     }
     p.complete(r)
-}
-
-/// The socket of endpoint `id` reported readiness (and is disarmed): progress.
-pub(super) fn on_event(st: &mut State, cfg: &NetConfig, id: EndpointId) {
-    if let Some(u) = st.udp(id) {
-        u.armed.fired();
-    }
-    progress(st, cfg, id);
 }
 
 /// Sends and receives what the socket allows without blocking, then arms the socket for

@@ -1,20 +1,15 @@
 //! The stack as a library: requests as libantMCOOP submits them, real sockets on the
 //! host, replies through a recording [`Host`] (two robots in one process).
-use std::ffi::{c_void, CString};
+use std::ffi::CString;
 use std::io::Write;
-use std::net::{Ipv4Addr, TcpListener, TcpStream};
-use std::sync::Arc;
-use std::time::Duration;
+use std::net::{Ipv4Addr, TcpStream};
 
-use common::Recorder;
-use openr_ipstack::{EndpointId, Net, NetOptions, NetResult, Request, Selector};
+use common::{encode, free_robot_port, request, robot, Robot, PATIENCE, PROTO_ENV, PROTO_TCP};
+use openr_ipstack::{EndpointId, NetOptions, Request, Selector};
 
 mod common;
 
-const PROTO_ENV: i32 = 0;
 const PROTO_INIT: i32 = 100;
-const PROTO_TCP: i32 = 1;
-const ENV_CREATE_ENDPOINT: i32 = -1;
 const ENV_CREATE_BUFFER: i32 = -2;
 const ENV_DESTROY_BUFFER: i32 = -3;
 const INIT_SET: i32 = -1;
@@ -26,80 +21,6 @@ const TCP_CLOSE: i32 = 6;
 const TCP_CONNECTION_CLOSED: i32 = 2;
 const ANT_FAIL: i32 = 1;
 const REGISTRY_NO_KEY: i32 = 23;
-
-/// A guard against a hang, not a speed assumption.
-const PATIENCE: Duration = Duration::from_secs(20);
-
-struct Robot {
-    net: &'static Net,
-    host: Arc<Recorder>,
-}
-
-fn robot(opts: NetOptions, stick: Vec<(&'static str, &'static str)>) -> Robot {
-    let host = Arc::new(Recorder::new(stick));
-    let net = Net::start(&opts, host.clone()).expect("the stack starts");
-    Robot { net, host }
-}
-
-/// The object's `encode`: the test's "message" is the result struct itself.
-unsafe extern "C" fn encode(blob: *mut c_void, res: *const NetResult) {
-    // SAFETY: `blob` is a message of `size_of::<NetResult>()` bytes (see `submit`), `res` a valid result.
-    unsafe { blob.cast::<NetResult>().write_unaligned(*res) };
-}
-
-fn request(proto: i32, op: i32) -> Request {
-    // SAFETY: all-zero is a valid value of this plain C struct (null pointers, zero numbers).
-    let mut r: Request = unsafe { std::mem::zeroed() };
-    (r.proto, r.op) = (proto, op);
-    r
-}
-
-fn decode(blob: &[u8]) -> NetResult {
-    assert_eq!(blob.len(), std::mem::size_of::<NetResult>());
-    // SAFETY: `blob` holds a whole NetResult written by `encode`.
-    unsafe { blob.as_ptr().cast::<NetResult>().read_unaligned() }
-}
-
-impl Robot {
-    /// Submits `req`; `Some((oid, selector))` answers later to that object, `None` waits.
-    fn submit(&self, req: &Request, to: Option<(usize, u32)>) -> (i32, NetResult) {
-        let mut blob = vec![0u8; std::mem::size_of::<NetResult>()];
-        let (oid, selector) = to.unwrap_or((0, 0));
-        // SAFETY: `req` is a valid request; `blob` is the message `encode` writes into.
-        let rc = unsafe { self.net.submit(req, blob.as_mut_ptr().cast(), blob.len(), encode, oid as *mut c_void, Selector(selector), to.is_none()) };
-        (rc, decode(&blob))
-    }
-
-    fn call(&self, req: &Request) -> NetResult {
-        let (rc, r) = self.submit(req, None);
-        assert_eq!(rc, 0);
-        r
-    }
-
-    fn reply(&self) -> (usize, u32, NetResult) {
-        let (oid, selector, blob) = self.host.replies.lock().unwrap().recv_timeout(PATIENCE).expect("a reply is sent");
-        (oid, selector, decode(&blob))
-    }
-
-    fn tcp_endpoint(&self) -> EndpointId {
-        let mut req = request(PROTO_ENV, ENV_CREATE_ENDPOINT);
-        req.value = PROTO_TCP;
-        let r = self.call(&req);
-        assert_eq!(r.error, 0);
-        assert_eq!(self.net.endpoint_protocol(r.endpoint), PROTO_TCP);
-        r.endpoint
-    }
-}
-
-/// A robot port whose host ports with offsets 1 and 2 are free now.
-fn free_robot_port() -> u16 {
-    loop {
-        let p = TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
-        if p < 65000 && (1..=2).all(|o| TcpListener::bind(("127.0.0.1", p + o)).is_ok()) {
-            return p;
-        }
-    }
-}
 
 #[test]
 fn two_robots_listen_on_their_own_host_ports_and_answer_the_listening_object() {
