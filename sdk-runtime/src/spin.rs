@@ -7,7 +7,8 @@
 //! Spinning takes a core, so at most `cores − 1` threads of the process spin at once
 //! (none on one core), and each for at most the budget; with every slot taken a waiter
 //! spins only its first few microseconds (the slot's holder is often the thread about
-//! to send to it), and past that, or past the budget, it parks. A thread whose spins
+//! to send to it), then polls a little longer yielding its core at each round, and
+//! past that, or past the budget, it parks. A thread whose spins
 //! keep coming up empty (an object that gets a message a frame, not a chain of them)
 //! spins only now and then, to notice when that changes. `OPENR_SPIN_US` sets the budget (0: never
 //! spin).
@@ -22,6 +23,15 @@ const DEFAULT_BUDGET: Duration = Duration::from_micros(50);
 
 /// How long a waiter spins before it also yields its core at each round.
 const PURE_SPIN: Duration = Duration::from_micros(3);
+
+/// How long a waiter that found every slot taken polls before it parks. At `--speed
+/// max` a frame hands the turn along a chain (frame thread → OVirtualRobotComm → the
+/// program's objects → back), one thread holding the slot: the next message often
+/// comes 5–20 µs later, and a park there costs a wake-up of 5–60 µs. Measured with
+/// movelegs (host time per frame, 7 runs each): 3 µs → 12.7 µs a frame, 10 → 8–9,
+/// 20 → 5.4–5.5, 50 → 4.8–5.0. Past `PURE_SPIN` the poll yields its core each round,
+/// so on a busy machine it mostly lets others run.
+const SHARED_SPIN: Duration = Duration::from_micros(20);
 
 /// Empty spins in a row after which a thread spins only on every [`PROBE`]th wait.
 const MISSES: u32 = 3;
@@ -89,13 +99,12 @@ fn poll_with<T>(spinning: &'static AtomicUsize, c: &Config, poll: impl FnMut() -
     }
     let Some(_slot) = take_slot(spinning, c.slots) else {
         // Every slot taken — typically by the very thread this one answered, about to
-        // find its answer and send the next message (a notify/ready ping-pong): a
-        // short spin still catches that without a wake-up, and costs a busy machine at
-        // most `PURE_SPIN` (a budget that short never reaches the yields).
+        // find its answer and send the next message (a notify/ready ping-pong, a
+        // frame's chain): a short poll still catches that without a wake-up.
         if c.slots == 0 {
             return None; // one core: whoever would answer cannot run meanwhile
         }
-        return spin(PURE_SPIN.min(c.budget), poll);
+        return spin(SHARED_SPIN.min(c.budget), poll);
     };
     spin(c.budget, poll)
 }
@@ -152,8 +161,8 @@ mod tests {
         assert_eq!(poll_with(&MINE, &c, || None::<()>), None);
         assert!(start.elapsed() >= c.budget);
         assert_eq!(MINE.load(Ordering::Acquire), 0, "the slot is given back");
-        // Every slot taken: a value that comes within PURE_SPIN is still caught, and the
-        // wait ends soon after PURE_SPIN, not after the (here very long) budget.
+        // Every slot taken: a value that comes within SHARED_SPIN is still caught, and
+        // the wait ends soon after SHARED_SPIN, not after the (here very long) budget.
         let long = Config { budget: Duration::from_secs(10), slots: 1 };
         let held = take_slot(&MINE, 1).expect("the one slot");
         let mut n = 0;
@@ -165,7 +174,7 @@ mod tests {
         let start = Instant::now();
         assert_eq!(poll_with(&MINE, &long, || None::<()>), None);
         let waited = start.elapsed();
-        assert!(waited >= PURE_SPIN && waited < long.budget / 2, "{waited:?}");
+        assert!(waited >= SHARED_SPIN && waited < long.budget / 2, "{waited:?}");
         drop(held);
         let never = Config { budget: Duration::ZERO, slots: 1 };
         assert_eq!(poll_with(&MINE, &never, || Some(1)), None, "a zero budget never spins");
