@@ -36,6 +36,8 @@ use super::scene::{posture, Posture, Scene};
 
 mod runs;
 mod spans;
+#[cfg(test)]
+mod sweep_tests;
 
 pub use runs::{segments, FlatRuns};
 
@@ -238,7 +240,8 @@ impl PinholeCamera {
         rgb.resize(w * h * 3, 0);
         let caster = Caster::new(self, world, wall_mm);
         let edges = spans::Edges::new(&caster, self);
-        let mut cuts = spans::Cuts::default();
+        let mut cuts = spans::Cuts::new(&edges);
+        let mut palette = spans::Palette::default();
         let mut runs = runs.map(|(r, min_run)| {
             r.clear(min_run);
             r
@@ -251,9 +254,9 @@ impl PinholeCamera {
             match runs.as_deref_mut() {
                 Some(r) => {
                     let mut r = runs::RowRuns::new(r);
-                    cuts.paint(row, pixel, |a, b, c| r.piece(a, b, c));
+                    cuts.paint(row, &mut palette, pixel, |a, b, c| r.piece(a, b, c));
                 }
-                None => cuts.paint(row, pixel, |_, _, _| {}),
+                None => cuts.paint(row, &mut palette, pixel, |_, _, _| {}),
             }
         }
     }
@@ -413,7 +416,7 @@ fn shade(rgb: [u8; 3], k: f64) -> [u8; 3] {
 /// ½ rounds half away from zero exactly as `round` does.
 #[inline(always)]
 fn round_byte(x: f64) -> u8 {
-    if !(x > 0.0) {
+    if x.is_nan() || x <= 0.0 {
         return 0; // negative, zero or NaN
     }
     if x >= 255.0 {
