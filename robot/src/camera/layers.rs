@@ -90,11 +90,10 @@ fn synth_from_rgb(l: &LayerLayout, rgb: &[u8], dst: &mut [u8], runs: Option<&Fla
         let mut sums = six(&mut block, w);
         let mut bands = six(row, w);
         segments(row_runs(runs, y), w, |a, b, flat| {
-            let e = if flat { a + 1 } else { b };
-            let sums = sub6(&mut sums, a, e);
-            h_blocks(&top[6 * a..6 * e], &bot[6 * a..6 * e], sums, sub6(&mut bands, a, e));
             if flat {
-                bands_copy_first(&mut bands, a, b);
+                bands_fill(&mut bands, a, b, h_block(&top[6 * a..6 * a + 6], &bot[6 * a..6 * a + 6]));
+            } else {
+                h_blocks(&top[6 * a..6 * b], &bot[6 * a..6 * b], sub6(&mut sums, a, b), sub6(&mut bands, a, b));
             }
         });
     }
@@ -128,6 +127,24 @@ fn h_blocks(top: &[u8], bot: &[u8], sums: [&mut [i16]; 6], bands: [&mut [u8]; 6]
     }
 }
 
+/// The six band values of one layer H block ([`h_blocks`] on one block, without the
+/// set-up of its loops: the pixel of a flat run).
+#[inline(always)]
+fn h_block(top: &[u8], bot: &[u8]) -> [u8; 6] {
+    let [[r0, g0, b0], [r1, g1, b1]] = pixel_pair(top);
+    let [[r2, g2, b2], [r3, g3, b3]] = pixel_pair(bot);
+    let [a, b, c, d] = [luma(r0, g0, b0), luma(r1, g1, b1), luma(r2, g2, b2), luma(r3, g3, b3)].map(|v| v as i16);
+    let sy = (a + b + c + d) as i32;
+    let (dr, db) = ((r0 + r1 + r2 + r3 - sy) as i16, (b0 + b1 + b2 + b3 - sy) as i16);
+    [mean4((a + b + c + d) as u16), chroma(dr), chroma(db), high_pass(c + d - a - b), high_pass(b + d - a - c), high_pass(a + d - b - c)]
+}
+
+/// Writes `bands[k][a..b]` = `v[k]` (a flat run).
+#[inline(always)]
+fn bands_fill(bands: &mut [&mut [u8]; 6], a: usize, b: usize, v: [u8; 6]) {
+    bands.iter_mut().zip(v).for_each(|(band, v)| band[a..b].fill(v));
+}
+
 /// The two bytes of `q` (2 bytes), read as one little-endian word.
 #[inline(always)]
 fn byte_pair(q: &[u8]) -> (u16, u16) {
@@ -147,35 +164,38 @@ fn synth_from_layer(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8]
         let (top, bot) = pair.split_at(src.row_stride());
         let mut bands = six(row, w);
         segments(row_runs(runs, y), w, |a, b, flat| {
-            let e = if flat { a + 1 } else { b };
-            let [yll, cr, cb, lh, hl, hh] = sub6(&mut bands, a, e);
+            if flat {
+                // one block, its pixel along the run
+                let px = |k: usize, t: &[u8]| byte_pair(&t[k * sw + 2 * a..k * sw + 2 * a + 2]);
+                let mean = |k| {
+                    let ((p, q), (r, t)) = (px(k, top), px(k, bot));
+                    mean4(p + q + r + t)
+                };
+                let ((ya, yb), (yc, yd)) = (px(0, top), px(0, bot));
+                let (ya, yb, yc, yd) = (ya as i16, yb as i16, yc as i16, yd as i16);
+                let hp = [high_pass(yc + yd - ya - yb), high_pass(yb + yd - ya - yc), high_pass(ya + yd - yb - yc)];
+                bands_fill(&mut bands, a, b, [mean(0), mean(1), mean(2), hp[0], hp[1], hp[2]]);
+                return;
+            }
+            let [yll, cr, cb, lh, hl, hh] = sub6(&mut bands, a, b);
             // Y LL, Cr and Cb: means of the source's Y, Cr and Cb over 2×2 blocks
             for (k, out) in [yll, cr, cb].into_iter().enumerate() {
-                let (t, u) = (&top[k * sw + 2 * a..k * sw + 2 * e], &bot[k * sw + 2 * a..k * sw + 2 * e]);
+                let (t, u) = (&top[k * sw + 2 * a..k * sw + 2 * b], &bot[k * sw + 2 * a..k * sw + 2 * b]);
                 for (o, (t, u)) in out.iter_mut().zip(t.chunks_exact(2).zip(u.chunks_exact(2))) {
                     let ((a, b), (c, d)) = (byte_pair(t), byte_pair(u));
                     *o = mean4(a + b + c + d);
                 }
             }
             let hp = lh.iter_mut().zip(hl).zip(hh);
-            for ((t, u), ((lh, hl), hh)) in top[2 * a..2 * e].chunks_exact(2).zip(bot[2 * a..2 * e].chunks_exact(2)).zip(hp) {
+            for ((t, u), ((lh, hl), hh)) in top[2 * a..2 * b].chunks_exact(2).zip(bot[2 * a..2 * b].chunks_exact(2)).zip(hp) {
                 let ((a, b), (c, d)) = (byte_pair(t), byte_pair(u));
                 let (a, b, c, d) = (a as i16, b as i16, c as i16, d as i16);
                 *lh = high_pass(c + d - a - b);
                 *hl = high_pass(b + d - a - c);
                 *hh = high_pass(a + d - b - c);
             }
-            if flat {
-                bands_copy_first(&mut bands, a, b);
-            }
         });
     }
-}
-
-/// [`copy_first`] on every band.
-#[inline(always)]
-fn bands_copy_first(bands: &mut [&mut [u8]; 6], a: usize, b: usize) {
-    bands.iter_mut().for_each(|band| copy_first(band, a, b));
 }
 
 /// Adds the number of bytes of `pixels` with bit k set to `counts[k]`.
