@@ -201,11 +201,20 @@ fn synth_from_layer(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8]
 /// Adds the number of bytes of `pixels` with bit k set to `counts[k]`.
 #[inline(always)]
 fn count_bits(pixels: &[u8], counts: &mut [u32; CDT_CHANNELS]) {
-    // Byte-wide sums vectorise well; 255 bytes cannot overflow them (wrapping_add
-    // only spares debug builds the overflow check).
-    for chunk in pixels.chunks(255) {
-        for (k, c) in counts.iter_mut().enumerate() {
-            *c += chunk.iter().fold(0u8, |n, &b| n.wrapping_add(b >> k & 1)) as u32;
+    // 32 byte-wide sums per channel vectorise well (a fold per channel ran 8 bytes at
+    // a time); 255 chunks cannot overflow them (wrapping_add only spares debug builds
+    // the overflow check).
+    for block in pixels.chunks(32 * 255) {
+        let mut acc = [[0u8; 32]; CDT_CHANNELS];
+        let mut chunks = block.chunks_exact(32);
+        for ch in &mut chunks {
+            for (k, acc) in acc.iter_mut().enumerate() {
+                acc.iter_mut().zip(ch).for_each(|(n, &b)| *n = n.wrapping_add(b >> k & 1));
+            }
+        }
+        let rest = chunks.remainder();
+        for (k, (c, acc)) in counts.iter_mut().zip(&acc).enumerate() {
+            *c += acc.iter().map(|&n| n as u32).sum::<u32>() + rest.iter().map(|&b| (b >> k & 1) as u32).sum::<u32>();
         }
     }
 }
@@ -230,10 +239,28 @@ fn synth_cdt(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8], lut: 
                 copy_first(drow, a, b);
             }
         });
-        // the tag bytes of the last row hold no pixels
-        count_bits(if y + 1 == l.height { drow.get(TAG_SIZE..).unwrap_or(&[]) } else { drow }, &mut counts);
+        if w != l.row_stride() {
+            count_bits(pixels_of_row(drow, y, l.height), &mut counts);
+        }
+    }
+    if w == l.row_stride() {
+        // rows without gaps: counted in one go
+        let (most, last) = dst[..h * w].split_at(h.saturating_sub(1) * w);
+        count_bits(most, &mut counts);
+        count_bits(pixels_of_row(last, h.saturating_sub(1), l.height), &mut counts);
     }
     counts
+}
+
+/// The pixels of row `y` of a CDT layer of `height` rows: the tag bytes of the last row
+/// hold none.
+#[inline(always)]
+fn pixels_of_row(row: &[u8], y: usize, height: usize) -> &[u8] {
+    if y + 1 == height {
+        row.get(TAG_SIZE..).unwrap_or(&[])
+    } else {
+        row
+    }
 }
 
 /// Fills the four layers of `buf` (an image vector of `layout`) from a sensor-size
@@ -402,6 +429,28 @@ mod tests {
             let ycc = rgb_to_ycrcb(rgb);
             assert_eq!([chroma((4 * (r - y)) as i16), chroma((4 * (b - y)) as i16)], [ycc[1], ycc[2]], "{rgb:?}");
         }
+    }
+
+    #[test]
+    fn count_bits_counts_every_bit_of_every_byte() {
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        for n in [0, 1, 31, 32, 33, 104, 8160, 8161, 8320, 20000] {
+            let bytes: Vec<u8> = (0..n)
+                .map(|_| {
+                    x ^= x << 13;
+                    x ^= x >> 7;
+                    x ^= x << 17;
+                    x as u8
+                })
+                .collect();
+            let mut counts = [5u32; CDT_CHANNELS];
+            count_bits(&bytes, &mut counts);
+            let want: [u32; CDT_CHANNELS] = std::array::from_fn(|k| 5 + bytes.iter().map(|&b| (b >> k & 1) as u32).sum::<u32>());
+            assert_eq!(counts, want, "{n} bytes");
+        }
+        let mut counts = [0; CDT_CHANNELS];
+        count_bits(&[0xff; 40000], &mut counts);
+        assert_eq!(counts, [40000; CDT_CHANNELS]);
     }
 
     #[test]
