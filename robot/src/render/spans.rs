@@ -426,26 +426,45 @@ impl Cuts {
     /// cast before). `piece(a, b, colour)` is told of every span and pixel in order.
     pub(super) fn paint(&self, row: &mut [u8], palette: &mut Palette, pixel: impl Fn(usize) -> [u8; 3], mut piece: impl FnMut(usize, usize, [u8; 3])) {
         let mut span = |a: usize| palette.colour(self.key(a), || pixel(a));
+        // Flat spans not yet written: start..next, one colour. Most cuts change no
+        // choice that counts there (the next span has the same colour): one fill.
+        let (mut start, mut colour) = (0, [0; 3]);
+        #[inline(always)]
+        fn flush(row: &mut [u8], piece: &mut impl FnMut(usize, usize, [u8; 3]), start: usize, end: usize, c: [u8; 3]) {
+            if start < end {
+                fill(&mut row[3 * start..3 * end], c);
+                piece(start, end, c);
+            }
+        }
         let mut next = 0;
         for &(lo, hi) in &self.ranges {
             if lo > next {
                 let c = span(next);
-                fill(&mut row[3 * next..3 * lo], c);
-                piece(next, lo, c);
+                if c != colour || start == next {
+                    flush(row, &mut piece, start, next, colour);
+                    (start, colour) = (next, c);
+                }
                 next = lo;
             }
-            for u in next..hi {
-                let c = pixel(u);
-                row[3 * u..3 * u + 3].copy_from_slice(&c);
-                piece(u, u + 1, c);
+            if hi > next {
+                flush(row, &mut piece, start, next, colour);
+                for u in next..hi {
+                    let c = pixel(u);
+                    row[3 * u..3 * u + 3].copy_from_slice(&c);
+                    piece(u, u + 1, c);
+                }
+                (start, next) = (hi, hi);
             }
-            next = next.max(hi);
         }
         if next < self.width {
             let c = span(next);
-            fill(&mut row[3 * next..3 * self.width], c);
-            piece(next, self.width, c);
+            if c != colour || start == next {
+                flush(row, &mut piece, start, next, colour);
+                (start, colour) = (next, c);
+            }
+            next = self.width;
         }
+        flush(row, &mut piece, start, next, colour);
     }
 }
 
