@@ -287,6 +287,8 @@ pub(crate) struct Caster<'a> {
     /// The ball, its centre, camera − centre and |camera − centre|² − r².
     ball: Option<(Ball, Vec3, Vec3, f64)>,
     light: Vec3,
+    /// 1 / the ball's radius (worked out once: the same bytes as per pixel).
+    inv_r: f64,
 }
 
 /// The ball as seen by one row ([`Caster::ball_row`]).
@@ -304,7 +306,8 @@ impl<'a> Caster<'a> {
             let l: Vec3 = [0.3, 0.2, 1.0];
             scale(l, 1.0 / dot(l, l).sqrt())
         };
-        Caster { world, c, du: scale(cam.pose.left, -cam.su), psd_wall_x: wall_mm.map(|m| c[0] + m.max(0.0)), ball, light }
+        let inv_r = world.ball.map_or(1.0, |b| 1.0 / b.radius_mm);
+        Caster { world, c, du: scale(cam.pose.left, -cam.su), psd_wall_x: wall_mm.map(|m| c[0] + m.max(0.0)), ball, light, inv_r }
     }
 
     /// The ball if the row whose first ray is `d0` may show it: the plane of the row's
@@ -330,7 +333,7 @@ impl<'a> Caster<'a> {
                 let t = (-bb - disc.sqrt()) / aa;
                 if t > 0.0 && psd_wall_x.is_none_or(|x| d[0] <= 0.0 || t < (x - c[0]) / d[0]) {
                     let p = add(c, scale(d, t));
-                    let n = scale(sub(p, centre), 1.0 / b.radius_mm);
+                    let n = scale(sub(p, centre), self.inv_r);
                     return shade(b.rgb, 0.7 + 0.3 * dot(n, self.light).max(0.0));
                 }
             }
