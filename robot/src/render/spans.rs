@@ -36,6 +36,14 @@ struct Form {
     a1: f64,
     b: f64,
     inv_b: f64,
+    /// The `when` conditions as bits (2·axis + 1 for positive), and the pixel where the
+    /// form is zero along row v, p + v·q, with the margin in pixels (`walk`: when that
+    /// is exact enough, |p| and |q|·height well below 1/ε; else [`near_zero`]).
+    need: u8,
+    p: f64,
+    q: f64,
+    mw: f64,
+    walk: bool,
     /// The rows outside `rows.0..rows.1` keep one sign all along ([`Form::row_sign`]).
     rows: (usize, usize),
 }
@@ -153,8 +161,12 @@ impl Edges {
         let mut push = |n: Vec3, when: [Option<(usize, f64)>; 2]| {
             let bit = 1 << forms.len();
             let margin = MARGIN * dot(n, n).sqrt() * size;
-            let b = dot(n, k.du);
-            let mut f = Form { margin, when, bit, a0: dot(n, first), a1: dot(n, dv), b, inv_b: 1.0 / b, rows: (0, height) };
+            let (a0, a1, b) = (dot(n, first), dot(n, dv), dot(n, k.du));
+            let need = when.iter().flatten().fold(0, |m, &(axis, sign)| m | 1 << (2 * axis + (sign > 0.0) as usize));
+            let (inv_b, h) = (1.0 / b, height as f64);
+            let (p, q) = (-a0 * inv_b, -a1 * inv_b);
+            let walk = b != 0.0 && p.abs() < 1e7 && (q * h).abs() < 1e7;
+            let mut f = Form { margin, when, bit, a0, a1, b, inv_b, need, p, q, mw: margin * inv_b.abs(), walk, rows: (0, height) };
             f.rows = f.rows(height, w);
             forms.push(f)
         };
@@ -370,11 +382,18 @@ impl Cuts {
         // the axes' signs where they keep one over the row (the first three forms): a
         // form reachable only with the other sign counts nowhere in it (its key bit
         // stays clear)
-        let axes: [Option<bool>; 3] = std::array::from_fn(|i| e.forms[[1, 2, 0][i]].row_sign(v, w).1);
+        // (as `need` bits: which conditions fail on the whole row, which hold on it)
+        let (mut fail, mut hold) = (0u8, 0u8);
+        for (axis, i) in [1, 2, 0].into_iter().enumerate() {
+            if let Some(positive) = e.forms[i].row_sign(v, w).1 {
+                fail |= 1 << (2 * axis + !positive as usize);
+                hold |= 1 << (2 * axis + positive as usize);
+            }
+        }
         let mut key0 = self.key_rest;
         for &i in &self.active {
             let f = &e.forms[i];
-            if f.when.iter().flatten().any(|&(axis, sign)| axes[axis] == Some(sign < 0.0)) {
+            if f.need & fail != 0 {
                 continue;
             }
             // most forms keep one sign over the whole row
@@ -386,11 +405,19 @@ impl Cuts {
                 (a, None) => a,
             };
             self.crossing.push((a, f.b, f.bit));
-            let mut s = near_zero(a, f.b, f.inv_b, f.margin);
-            for &(axis, sign) in f.when.iter().flatten() {
-                let (a, b) = (d0[axis], du[axis]);
-                let sg = signs[axis].get_or_insert_with(|| [may_have_sign(a, b, -1.0, MARGIN * size), may_have_sign(a, b, 1.0, MARGIN * size)]);
-                s = s.and(sg[(sign > 0.0) as usize]);
+            let mut s = if f.walk {
+                let u = f.p + v * f.q;
+                Span(u - f.mw, u + f.mw)
+            } else {
+                near_zero(a, f.b, f.inv_b, f.margin)
+            };
+            // conditions that hold on the whole row cut nothing off
+            if f.need & !hold != 0 {
+                for &(axis, sign) in f.when.iter().flatten() {
+                    let (a, b) = (d0[axis], du[axis]);
+                    let sg = signs[axis].get_or_insert_with(|| [may_have_sign(a, b, -1.0, MARGIN * size), may_have_sign(a, b, 1.0, MARGIN * size)]);
+                    s = s.and(sg[(sign > 0.0) as usize]);
+                }
             }
             add(&mut self.ranges, width, s, 0.0);
         }
@@ -602,6 +629,11 @@ mod tests {
                 a1,
                 b: g.range(-2.0, 2.0),
                 inv_b: 0.0,
+                need: 0,
+                p: 0.0,
+                q: 0.0,
+                mw: 0.0,
+                walk: false,
                 rows: (0, 0),
             };
             let (h, w) = (320, 416.0);
