@@ -246,9 +246,12 @@ impl PinholeCamera {
             r.clear(min_run);
             r
         });
+        // the rows beyond these cannot pass the ball test (its square root and division
+        // were ~2 % of an image's time)
+        let ball_rows = world.ball.map_or((0, 0), |b| spans::ball_rows(self, &b));
         for (v, row) in rgb.chunks_exact_mut(w * 3).take(h).enumerate() {
             let d0 = self.ray(0.5, v as f64 + 0.5);
-            let ball_row = caster.ball_row(d0);
+            let ball_row = if (ball_rows.0..ball_rows.1).contains(&v) { caster.ball_row(d0) } else { None };
             cuts.find(&caster, &edges, v, d0, ball_row.is_some(), w);
             let pixel = |u| caster.pixel(d0, &ball_row, u);
             match runs.as_deref_mut() {

@@ -222,17 +222,30 @@ impl Edges {
 }
 
 /// The rows that may show the contact shadow of `b` (a disc of its radius on the floor
-/// under its centre): those its bounding square projects on, two more each side (far
-/// more than the margin of the shadow's cut moves it). A square not wholly in front of
-/// the camera may be anywhere: all rows. A camera not above the floor sees no floor.
+/// under its centre): those its bounding square projects on ([`rows_of`]). A camera not
+/// above the floor sees no floor.
 fn shadow_rows(cam: &super::PinholeCamera, b: &super::Ball) -> (usize, usize) {
-    let p = cam.pose;
-    if p.position[2] <= 0.0 {
+    if cam.pose.position[2] <= 0.0 {
         return (0, 0);
     }
+    rows_of(cam, [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)].map(|(dx, dy)| [b.x_mm + dx * b.radius_mm, b.y_mm + dy * b.radius_mm, 0.0]))
+}
+
+/// The rows that may show the ball: those its bounding cube projects on ([`rows_of`]).
+pub(super) fn ball_rows(cam: &super::PinholeCamera, b: &super::Ball) -> (usize, usize) {
+    let (centre, r) = ([b.x_mm, b.y_mm, b.radius_mm], b.radius_mm);
+    let corners: [Vec3; 8] = std::array::from_fn(|i| std::array::from_fn(|k| centre[k] + if i >> k & 1 == 1 { r } else { -r }));
+    rows_of(cam, corners)
+}
+
+/// The rows of the image a convex solid with these corners may show on: those the
+/// corners project on, two more each side (far more than the rounding of any test on
+/// a row moves it). A solid not wholly in front of the camera may be anywhere: all rows.
+fn rows_of<const N: usize>(cam: &super::PinholeCamera, corners: [Vec3; N]) -> (usize, usize) {
+    let p = cam.pose;
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for (dx, dy) in [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)] {
-        let d = sub([b.x_mm + dx * b.radius_mm, b.y_mm + dy * b.radius_mm, 0.0], p.position);
+    for corner in corners {
+        let d = sub(corner, p.position);
         let z = dot(d, p.forward);
         if z <= 1.0 || z.is_nan() {
             return (0, cam.height);

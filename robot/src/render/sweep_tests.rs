@@ -42,3 +42,22 @@ fn head_sweeps_give_the_same_image_as_every_pixel() {
         }
     }
 }
+
+/// No row outside [`super::spans::ball_rows`] passes the per-row ball test (the renderer
+/// skips the test there; casting every pixel does not).
+#[test]
+fn ball_rows_hold_every_row_the_ball_test_passes() {
+    let mut g = Lcg(31);
+    let mut seen = 0;
+    for i in 0..3000 {
+        let (cam, world, wall) = super::tests::random_scene(&mut g);
+        let Some(b) = world.ball else { continue };
+        let caster = Caster::new(&cam, &world, wall);
+        let (lo, hi) = super::spans::ball_rows(&cam, &b);
+        for v in (0..cam.height).filter(|v| !(lo..hi).contains(v)) {
+            assert!(caster.ball_row(cam.ray(0.5, v as f64 + 0.5)).is_none(), "scene {i}, row {v} outside {lo}..{hi}");
+        }
+        seen += (hi - lo < cam.height) as usize;
+    }
+    assert!(seen > 100, "{seen} scenes with a narrower range");
+}
