@@ -368,6 +368,7 @@ impl Cuts {
 
     /// Finds the pixels of row `v` (whose first ray is `d0`; `ball`: the ball may show
     /// in it) that cannot share a span's colour.
+    #[inline(always)]
     pub(super) fn find(&mut self, k: &Caster, e: &Edges, v: usize, d0: Vec3, ball: bool, width: usize) {
         assert_eq!(v, self.row, "rows in order");
         self.row += 1;
@@ -486,6 +487,7 @@ impl Cuts {
     /// Writes the row: the cut pixels cast one by one, each span between them filled
     /// with the colour of its first pixel (from `palette` when a span of its key was
     /// cast before). `piece(a, b, colour)` is told of every span and pixel in order.
+    #[inline(always)]
     pub(super) fn paint(&self, row: &mut [u8], palette: &mut Palette, pixel: impl Fn(usize) -> [u8; 3], mut piece: impl FnMut(usize, usize, [u8; 3])) {
         let mut span = |a: usize| palette.colour(self.key(a), || pixel(a));
         // Flat spans not yet written: start..next, one colour. Most cuts change no
@@ -603,6 +605,7 @@ impl Palette {
 }
 
 /// Fills `px` (whole RGB pixels) with one colour, 16 pixels per copy.
+#[inline(always)]
 fn fill(px: &mut [u8], c: [u8; 3]) {
     let n = px.len();
     if n < 48 {

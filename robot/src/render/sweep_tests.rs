@@ -9,6 +9,10 @@ fn check(i: usize, cam: &PinholeCamera, world: &CameraWorld, wall: Option<f64>, 
     cam.render(world, wall, fast, Some((runs, 2)));
     cam.render_every_pixel(world, wall, slow);
     assert!(*runs == FlatRuns::scan(fast, 3, cam.width, 2), "image {i}: runs");
+    // the baseline x86-64 code too (`render` takes the AVX2 one where the CPU has it)
+    let (mut base, mut base_runs) = (Vec::new(), FlatRuns::default());
+    cam.render_rows(world, wall, &mut base, Some((&mut base_runs, 2)));
+    assert!(base == *fast && base_runs == *runs, "image {i}: baseline code");
     if fast != slow {
         let k = fast.iter().zip(slow.iter()).position(|(a, b)| a != b).unwrap() / 3;
         panic!("image {i}: pixel ({}, {}) differs\n{cam:?}\n{world:?} {wall:?}", k % cam.width, k / cam.width);
