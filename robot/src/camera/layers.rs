@@ -38,11 +38,16 @@ fn chroma(s: i16) -> u8 {
     ((32 * (s + 1020) as u16 + 127) / 255).min(255) as u8
 }
 
-/// The six bands (or any six `w`-long parts) of a layer row.
+/// The six bands (or any six `w`-long parts) of a layer row (split off one by one:
+/// `chunks_exact_mut` divides by `w`, two divisions a row).
 #[inline(always)]
 fn six<T>(row: &mut [T], w: usize) -> [&mut [T]; 6] {
-    let mut parts = row.chunks_exact_mut(w);
-    std::array::from_fn(|_| parts.next().expect("a row of six bands"))
+    let (p0, rest) = row.split_at_mut(w);
+    let (p1, rest) = rest.split_at_mut(w);
+    let (p2, rest) = rest.split_at_mut(w);
+    let (p3, rest) = rest.split_at_mut(w);
+    let (p4, rest) = rest.split_at_mut(w);
+    [p0, p1, p2, p3, p4, &mut rest[..w]]
 }
 
 /// Columns `a..e` of six bands (written out: `each_mut().map` is not inlined).
