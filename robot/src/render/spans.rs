@@ -143,6 +143,8 @@ pub(super) struct Edges {
     shadow_rows: (usize, usize),
     /// A bound of |d| over the image: |d0| + width·|du|.
     size: f64,
+    /// 1 / each axis of the ray's step along a row.
+    inv_du: Vec3,
     /// The forms by the row from which they may change sign along a row, and by the row
     /// from which they no longer do ([`Form::rows`]).
     enter: Vec<(usize, usize)>,
@@ -217,7 +219,7 @@ impl Edges {
         let mut leave: Vec<_> = forms.iter().enumerate().map(|(i, f)| (f.rows.1, i)).collect();
         enter.sort_unstable();
         leave.sort_unstable();
-        Edges { forms, shadow, shadow_rows, size, enter, leave }
+        Edges { forms, shadow, shadow_rows, size, inv_du: k.du.map(|x| 1.0 / x), enter, leave }
     }
 }
 
@@ -302,6 +304,22 @@ fn near_zero(a: f64, b: f64, inv_b: f64, m: f64) -> Span {
         Span::new(u1, u2)
     } else {
         Span::new(u2, u1)
+    }
+}
+
+/// Where a + b·u may be negative and where it may be positive ([`may_have_sign`] with
+/// s = −1 and 1), by 1/b (`inv_b`) worked out once per image.
+#[inline(always)]
+fn axis_spans(a: f64, b: f64, inv_b: f64, m: f64) -> [Span; 2] {
+    if b == 0.0 {
+        return [may_have_sign(a, b, -1.0, m), may_have_sign(a, b, 1.0, m)];
+    }
+    // a + b·u ≤ m, a + b·u ≥ −m
+    let (neg, pos) = ((m - a) * inv_b, (-m - a) * inv_b);
+    if b > 0.0 {
+        [Span::new(f64::NEG_INFINITY, neg), Span::new(pos, f64::INFINITY)]
+    } else {
+        [Span::new(neg, f64::INFINITY), Span::new(f64::NEG_INFINITY, pos)]
     }
 }
 
@@ -428,8 +446,8 @@ impl Cuts {
             // conditions that hold on the whole row cut nothing off
             if f.need & !hold != 0 {
                 for &(axis, sign) in f.when.iter().flatten() {
-                    let (a, b) = (d0[axis], du[axis]);
-                    let sg = signs[axis].get_or_insert_with(|| [may_have_sign(a, b, -1.0, MARGIN * size), may_have_sign(a, b, 1.0, MARGIN * size)]);
+                    let (a, b, inv_b) = (d0[axis], du[axis], e.inv_du[axis]);
+                    let sg = signs[axis].get_or_insert_with(|| axis_spans(a, b, inv_b, MARGIN * size));
                     s = s.and(sg[(sign > 0.0) as usize]);
                 }
             }
