@@ -12,8 +12,12 @@
 //! A form counts only where the choices it feeds are reachable (a line on the floor
 //! only where the ray goes down, a wall face only where the ray goes towards it):
 //! otherwise the far side of the camera would cut rows for nothing.
-//! `tests::spans_give_the_same_image_as_every_pixel` checks the result against casting
-//! every pixel over many poses and scenes.
+//! A flat span's colour follows from the signs of the forms at it ([`Cuts::key`]), so
+//! it is cast once per image and key ([`Palette`]), and spans of one colour are filled
+//! at once. Rows are walked top down: each form is looked at only on the rows where it
+//! may change sign along a row ([`Form::rows`]).
+//! `tests::spans_give_the_same_image_as_every_pixel` and `sweep_tests` check the result
+//! against casting every pixel over many poses and scenes.
 use super::{dot, sub, Caster, Vec3};
 
 /// Relative margin of a sign: |n·d| ≤ MARGIN·|n|·|d| counts as "maybe zero".
@@ -411,10 +415,9 @@ impl Cuts {
         let form = |n: Vec3| (dot(n, d0), dot(n, du));
         // where the ray's x, y, z may be negative / positive (worked out when wanted)
         let mut signs: [Option<[Span; 2]>; 3] = [None; 3];
-        // the axes' signs where they keep one over the row (the first three forms): a
-        // form reachable only with the other sign counts nowhere in it (its key bit
-        // stays clear)
-        // (as `need` bits: which conditions fail on the whole row, which hold on it)
+        // the conditions (`need` bits) that fail on the whole row and those that hold on
+        // it, from the axes that keep one sign over it (the first three forms): a form
+        // whose condition fails counts nowhere in the row (its key bit stays clear)
         let (mut fail, mut hold) = (0u8, 0u8);
         for (axis, i) in [1, 2, 0].into_iter().enumerate() {
             if let Some(positive) = e.forms[i].row_sign(v, w).1 {
