@@ -253,6 +253,7 @@ impl PinholeCamera {
         self.render_rows(world, wall_mm, rgb, runs)
     }
 
+    /// [`PinholeCamera::render`]'s work, for the code of the CPU at hand.
     #[inline(always)]
     fn render_rows(&self, world: &CameraWorld, wall_mm: Option<f64>, rgb: &mut Vec<u8>, runs: Option<(&mut FlatRuns, usize)>) {
         let (w, h) = (self.width, self.height);
