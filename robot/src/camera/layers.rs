@@ -38,11 +38,16 @@ fn chroma(s: i16) -> u8 {
     ((32 * (s + 1020) as u16 + 127) / 255).min(255) as u8
 }
 
-/// The six bands (or any six `w`-long parts) of a layer row.
+/// The six bands (or any six `w`-long parts) of a layer row (split off one by one:
+/// `chunks_exact_mut` divides by `w`, two divisions a row).
 #[inline(always)]
 fn six<T>(row: &mut [T], w: usize) -> [&mut [T]; 6] {
-    let mut parts = row.chunks_exact_mut(w);
-    std::array::from_fn(|_| parts.next().expect("a row of six bands"))
+    let (p0, rest) = row.split_at_mut(w);
+    let (p1, rest) = rest.split_at_mut(w);
+    let (p2, rest) = rest.split_at_mut(w);
+    let (p3, rest) = rest.split_at_mut(w);
+    let (p4, rest) = rest.split_at_mut(w);
+    [p0, p1, p2, p3, p4, &mut rest[..w]]
 }
 
 /// Columns `a..e` of six bands (written out: `each_mut().map` is not inlined).
@@ -90,11 +95,10 @@ fn synth_from_rgb(l: &LayerLayout, rgb: &[u8], dst: &mut [u8], runs: Option<&Fla
         let mut sums = six(&mut block, w);
         let mut bands = six(row, w);
         segments(row_runs(runs, y), w, |a, b, flat| {
-            let e = if flat { a + 1 } else { b };
-            let sums = sub6(&mut sums, a, e);
-            h_blocks(&top[6 * a..6 * e], &bot[6 * a..6 * e], sums, sub6(&mut bands, a, e));
             if flat {
-                bands_copy_first(&mut bands, a, b);
+                bands_fill(&mut bands, a, b, h_block(&top[6 * a..6 * a + 6], &bot[6 * a..6 * a + 6]));
+            } else {
+                h_blocks(&top[6 * a..6 * b], &bot[6 * a..6 * b], sub6(&mut sums, a, b), sub6(&mut bands, a, b));
             }
         });
     }
@@ -128,6 +132,24 @@ fn h_blocks(top: &[u8], bot: &[u8], sums: [&mut [i16]; 6], bands: [&mut [u8]; 6]
     }
 }
 
+/// The six band values of one layer H block ([`h_blocks`] on one block, without the
+/// set-up of its loops: the pixel of a flat run).
+#[inline(always)]
+fn h_block(top: &[u8], bot: &[u8]) -> [u8; 6] {
+    let [[r0, g0, b0], [r1, g1, b1]] = pixel_pair(top);
+    let [[r2, g2, b2], [r3, g3, b3]] = pixel_pair(bot);
+    let [a, b, c, d] = [luma(r0, g0, b0), luma(r1, g1, b1), luma(r2, g2, b2), luma(r3, g3, b3)].map(|v| v as i16);
+    let sy = (a + b + c + d) as i32;
+    let (dr, db) = ((r0 + r1 + r2 + r3 - sy) as i16, (b0 + b1 + b2 + b3 - sy) as i16);
+    [mean4((a + b + c + d) as u16), chroma(dr), chroma(db), high_pass(c + d - a - b), high_pass(b + d - a - c), high_pass(a + d - b - c)]
+}
+
+/// Writes `bands[k][a..b]` = `v[k]` (a flat run).
+#[inline(always)]
+fn bands_fill(bands: &mut [&mut [u8]; 6], a: usize, b: usize, v: [u8; 6]) {
+    bands.iter_mut().zip(v).for_each(|(band, v)| band[a..b].fill(v));
+}
+
 /// The two bytes of `q` (2 bytes), read as one little-endian word.
 #[inline(always)]
 fn byte_pair(q: &[u8]) -> (u16, u16) {
@@ -147,45 +169,57 @@ fn synth_from_layer(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8]
         let (top, bot) = pair.split_at(src.row_stride());
         let mut bands = six(row, w);
         segments(row_runs(runs, y), w, |a, b, flat| {
-            let e = if flat { a + 1 } else { b };
-            let [yll, cr, cb, lh, hl, hh] = sub6(&mut bands, a, e);
+            if flat {
+                // one block, its pixel along the run
+                let px = |k: usize, t: &[u8]| byte_pair(&t[k * sw + 2 * a..k * sw + 2 * a + 2]);
+                let mean = |k| {
+                    let ((p, q), (r, t)) = (px(k, top), px(k, bot));
+                    mean4(p + q + r + t)
+                };
+                let ((ya, yb), (yc, yd)) = (px(0, top), px(0, bot));
+                let (ya, yb, yc, yd) = (ya as i16, yb as i16, yc as i16, yd as i16);
+                let hp = [high_pass(yc + yd - ya - yb), high_pass(yb + yd - ya - yc), high_pass(ya + yd - yb - yc)];
+                bands_fill(&mut bands, a, b, [mean(0), mean(1), mean(2), hp[0], hp[1], hp[2]]);
+                return;
+            }
+            let [yll, cr, cb, lh, hl, hh] = sub6(&mut bands, a, b);
             // Y LL, Cr and Cb: means of the source's Y, Cr and Cb over 2×2 blocks
             for (k, out) in [yll, cr, cb].into_iter().enumerate() {
-                let (t, u) = (&top[k * sw + 2 * a..k * sw + 2 * e], &bot[k * sw + 2 * a..k * sw + 2 * e]);
+                let (t, u) = (&top[k * sw + 2 * a..k * sw + 2 * b], &bot[k * sw + 2 * a..k * sw + 2 * b]);
                 for (o, (t, u)) in out.iter_mut().zip(t.chunks_exact(2).zip(u.chunks_exact(2))) {
                     let ((a, b), (c, d)) = (byte_pair(t), byte_pair(u));
                     *o = mean4(a + b + c + d);
                 }
             }
             let hp = lh.iter_mut().zip(hl).zip(hh);
-            for ((t, u), ((lh, hl), hh)) in top[2 * a..2 * e].chunks_exact(2).zip(bot[2 * a..2 * e].chunks_exact(2)).zip(hp) {
+            for ((t, u), ((lh, hl), hh)) in top[2 * a..2 * b].chunks_exact(2).zip(bot[2 * a..2 * b].chunks_exact(2)).zip(hp) {
                 let ((a, b), (c, d)) = (byte_pair(t), byte_pair(u));
                 let (a, b, c, d) = (a as i16, b as i16, c as i16, d as i16);
                 *lh = high_pass(c + d - a - b);
                 *hl = high_pass(b + d - a - c);
                 *hh = high_pass(a + d - b - c);
             }
-            if flat {
-                bands_copy_first(&mut bands, a, b);
-            }
         });
     }
-}
-
-/// [`copy_first`] on every band.
-#[inline(always)]
-fn bands_copy_first(bands: &mut [&mut [u8]; 6], a: usize, b: usize) {
-    bands.iter_mut().for_each(|band| copy_first(band, a, b));
 }
 
 /// Adds the number of bytes of `pixels` with bit k set to `counts[k]`.
 #[inline(always)]
 fn count_bits(pixels: &[u8], counts: &mut [u32; CDT_CHANNELS]) {
-    // Byte-wide sums vectorise well; 255 bytes cannot overflow them (wrapping_add
-    // only spares debug builds the overflow check).
-    for chunk in pixels.chunks(255) {
-        for (k, c) in counts.iter_mut().enumerate() {
-            *c += chunk.iter().fold(0u8, |n, &b| n.wrapping_add(b >> k & 1)) as u32;
+    // 32 byte-wide sums per channel vectorise well (a fold per channel ran 8 bytes at
+    // a time); 255 chunks cannot overflow them (wrapping_add only spares debug builds
+    // the overflow check).
+    for block in pixels.chunks(32 * 255) {
+        let mut acc = [[0u8; 32]; CDT_CHANNELS];
+        let mut chunks = block.chunks_exact(32);
+        for ch in &mut chunks {
+            for (k, acc) in acc.iter_mut().enumerate() {
+                acc.iter_mut().zip(ch).for_each(|(n, &b)| *n = n.wrapping_add(b >> k & 1));
+            }
+        }
+        let rest = chunks.remainder();
+        for (k, (c, acc)) in counts.iter_mut().zip(&acc).enumerate() {
+            *c += acc.iter().map(|&n| n as u32).sum::<u32>() + rest.iter().map(|&b| (b >> k & 1) as u32).sum::<u32>();
         }
     }
 }
@@ -210,10 +244,28 @@ fn synth_cdt(src: &LayerLayout, s: &[u8], l: &LayerLayout, dst: &mut [u8], lut: 
                 copy_first(drow, a, b);
             }
         });
-        // the tag bytes of the last row hold no pixels
-        count_bits(if y + 1 == l.height { drow.get(TAG_SIZE..).unwrap_or(&[]) } else { drow }, &mut counts);
+        if w != l.row_stride() {
+            count_bits(pixels_of_row(drow, y, l.height), &mut counts);
+        }
+    }
+    if w == l.row_stride() {
+        // rows without gaps: counted in one go
+        let (most, last) = dst[..h * w].split_at(h.saturating_sub(1) * w);
+        count_bits(most, &mut counts);
+        count_bits(pixels_of_row(last, h.saturating_sub(1), l.height), &mut counts);
     }
     counts
+}
+
+/// The pixels of row `y` of a CDT layer of `height` rows: the tag bytes of the last row
+/// hold none.
+#[inline(always)]
+fn pixels_of_row(row: &[u8], y: usize, height: usize) -> &[u8] {
+    if y + 1 == height {
+        row.get(TAG_SIZE..).unwrap_or(&[])
+    } else {
+        row
+    }
 }
 
 /// Fills the four layers of `buf` (an image vector of `layout`) from a sensor-size
@@ -382,6 +434,28 @@ mod tests {
             let ycc = rgb_to_ycrcb(rgb);
             assert_eq!([chroma((4 * (r - y)) as i16), chroma((4 * (b - y)) as i16)], [ycc[1], ycc[2]], "{rgb:?}");
         }
+    }
+
+    #[test]
+    fn count_bits_counts_every_bit_of_every_byte() {
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        for n in [0, 1, 31, 32, 33, 104, 8160, 8161, 8320, 20000] {
+            let bytes: Vec<u8> = (0..n)
+                .map(|_| {
+                    x ^= x << 13;
+                    x ^= x >> 7;
+                    x ^= x << 17;
+                    x as u8
+                })
+                .collect();
+            let mut counts = [5u32; CDT_CHANNELS];
+            count_bits(&bytes, &mut counts);
+            let want: [u32; CDT_CHANNELS] = std::array::from_fn(|k| 5 + bytes.iter().map(|&b| (b >> k & 1) as u32).sum::<u32>());
+            assert_eq!(counts, want, "{n} bytes");
+        }
+        let mut counts = [0; CDT_CHANNELS];
+        count_bits(&[0xff; 40000], &mut counts);
+        assert_eq!(counts, [40000; CDT_CHANNELS]);
     }
 
     #[test]
