@@ -12,7 +12,7 @@
 
 class Watch : public OObject {
 public:
-    Watch() : images(0), sensors(0), luma(0) {}
+    Watch() : images(0), sensors(0), luma(0), readPixels(true) {}
     virtual ~Watch() {}
 
     OSubject*  subject[numOfSubject];
@@ -29,6 +29,7 @@ private:
     int images;
     int sensors;
     unsigned long luma;
+    bool readPixels;  // false when the stick has /MS/NOPIXEL
 };
 
 #endif

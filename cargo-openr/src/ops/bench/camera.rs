@@ -62,9 +62,9 @@ fn max_speed_run_net(exe: &Path, ms: &Path, root: &Path, secs: f64) -> Result<(f
     Ok(((long - short).max(1e-6), out))
 }
 
-/// `base` (a built MS tree) with camwatch's object added (it reads every image), made in
-/// `work/name`.
-pub fn with_camwatch(base: &Path, camwatch: &Path, work: &Path, name: &str) -> Result<PathBuf> {
+/// `base` (a built MS tree) with camwatch's object added (it takes every image, and reads
+/// its pixels unless `pixels` is false), made in `work/name`.
+pub fn with_camwatch(base: &Path, camwatch: &Path, work: &Path, name: &str, pixels: bool) -> Result<PathBuf> {
     let dst = work.join(name).join("MS");
     let _ = std::fs::remove_dir_all(&dst);
     std::fs::create_dir_all(work.join(name))?;
@@ -79,6 +79,9 @@ pub fn with_camwatch(base: &Path, camwatch: &Path, work: &Path, name: &str) -> R
         text.push_str(&std::fs::read_to_string(from.join(cfg))?);
         std::fs::write(to.join(cfg), text)?;
     }
+    if !pixels {
+        std::fs::write(dst.join("NOPIXEL"), "camwatch: take each image, read none of its pixels\n")?;
+    }
     Ok(dst)
 }
 
@@ -89,6 +92,10 @@ pub struct Programs<'a> {
     pub headsweep: &'a Path,
     /// headsweep + camwatch.
     pub camsweep: &'a Path,
+    /// headsweep + camwatch reading no pixel.
+    pub camsweep_nopixel: &'a Path,
+    /// headsweep + camwatch compiled without the alignment trap.
+    pub camsweep_notrap: &'a Path,
     pub movelegs: &'a Path,
 }
 
@@ -114,6 +121,25 @@ pub fn camera(exe: &Path, root: &Path, p: &Programs, tab: &mut Table) -> Result<
     tab.push(NO_CAMERA, SWEEP_S / without, "×", None);
     let images = images_read(&out).filter(|&n| n > 0.0).unwrap_or(30.0 * SWEEP_S);
     tab.push("host time per camera image, head sweeping ((camsweep − headsweep alone) / images read)", (with - without).max(0.0) / images * 1e3, "ms", None);
+    // The same with camwatch reading no pixel: what is left is the runtime's share of an
+    // image (scene, layers, the hand-offs that deliver it), not the program's loop.
+    let (bare, out) = max_speed_run_net(exe, p.camsweep_nopixel, root, SWEEP_S)?;
+    let images = images_read(&out).filter(|&n| n > 0.0).unwrap_or(30.0 * SWEEP_S);
+    tab.push(
+        "host time per camera image, the runtime's share (camsweep with camwatch reading no pixel − headsweep alone)",
+        (bare - without).max(0.0) / images * 1e3,
+        "ms",
+        None,
+    );
+    let (fast, out) = max_speed_run_net(exe, p.camsweep_notrap, root, SWEEP_S)?;
+    let images = images_read(&out).filter(|&n| n > 0.0).unwrap_or(30.0 * SWEEP_S);
+    tab.push(
+        "camsweep with camwatch built without the alignment trap (OPENR_ALIGNMENT_TRAP=0) at --speed max, 60 s, start-up taken off",
+        SWEEP_S / fast,
+        "×",
+        Some(NO_CAMERA),
+    );
+    tab.push("host time per camera image, camwatch without the alignment trap", (fast - without).max(0.0) / images * 1e3, "ms", None);
     let (still, _) = max_speed_run(exe, p.camwatch, root, 60.0)?;
     tab.push("camera program, head still (camwatch) at --speed max, 60 s", 60.0 / still, "×", None);
     Ok(())

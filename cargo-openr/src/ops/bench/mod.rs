@@ -19,9 +19,15 @@ use stats::{Table, Trial};
 
 /// Builds `program` (a directory with an aggregate Makefile) in `work` with the SDK root.
 fn build(program: &Path, work: &Path, root: &Path) -> Result<PathBuf> {
-    let dst = work.join(program.file_name().context("program dir")?);
-    let _ = std::fs::remove_dir_all(&dst);
-    let st = Command::new("cp").arg("-r").arg(program).arg(&dst).status()?;
+    build_into(program, &work.join(program.file_name().context("program dir")?), root, &[])
+}
+
+/// `build` into `dst` (a directory of `work`, beside its common.mk), with `env` set for
+/// the compiler wrappers.
+fn build_into(program: &Path, dst: &Path, root: &Path, env: &[(&str, &str)]) -> Result<PathBuf> {
+    let work = dst.parent().context("work dir")?;
+    let _ = std::fs::remove_dir_all(dst);
+    let st = Command::new("cp").arg("-r").arg(program).arg(dst).status()?;
     if !st.success() {
         bail!("cannot copy {}", program.display());
     }
@@ -30,7 +36,7 @@ fn build(program: &Path, work: &Path, root: &Path) -> Result<PathBuf> {
     if common.exists() {
         std::fs::copy(common, work.join("common.mk"))?;
     }
-    let out = Command::new("make").arg(format!("OPENRSDK_ROOT={}", root.display())).arg("install").current_dir(&dst).output()?;
+    let out = Command::new("make").arg(format!("OPENRSDK_ROOT={}", root.display())).arg("install").current_dir(dst).envs(env.iter().copied()).output()?;
     if !out.status.success() {
         bail!("building {} failed:\n{}{}", program.display(), String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
     }
@@ -156,6 +162,8 @@ struct Built {
     jitter: PathBuf,
     camwatch: PathBuf,
     camsweep: PathBuf,
+    camsweep_nopixel: PathBuf,
+    camsweep_notrap: PathBuf,
 }
 
 /// The groups of figures a run measures (`--only`).
@@ -196,7 +204,16 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path, runs: usize, o
         coldstart: build_if(wanted(Group::Coldstart), programs.join("coldstart"))?,
         movelegs: build_if(wanted(Group::Frames), repo.join("testdata/programs/movelegs"))?,
         jitter: build_if(wanted(Group::Jitter), programs.join("sensorjitter"))?,
-        camsweep: if wanted(Group::Camera) { camera::with_camwatch(&headsweep, &camwatch, work, "camsweep")? } else { PathBuf::new() },
+        camsweep: if wanted(Group::Camera) { camera::with_camwatch(&headsweep, &camwatch, work, "camsweep", true)? } else { PathBuf::new() },
+        camsweep_nopixel: if wanted(Group::Camera) { camera::with_camwatch(&headsweep, &camwatch, work, "camsweep-nopixel", false)? } else { PathBuf::new() },
+        // camwatch compiled without the check that faults a misaligned access as the
+        // robot's CPU would (`OPENR_ALIGNMENT_TRAP=0`): what that check costs its loop.
+        camsweep_notrap: if wanted(Group::Camera) {
+            let notrap = build_into(&programs.join("camwatch"), &work.join("camwatch-notrap"), root, &[("OPENR_ALIGNMENT_TRAP", "0")])?;
+            camera::with_camwatch(&headsweep, &notrap, work, "camsweep-notrap", true)?
+        } else {
+            PathBuf::new()
+        },
         camwatch,
         headsweep,
     };
@@ -216,7 +233,14 @@ fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, wante
     if wanted(Group::Coldstart) {
         coldstart(exe, root, b, tab)?;
     }
-    let programs = camera::Programs { camwatch: &b.camwatch, headsweep: &b.headsweep, camsweep: &b.camsweep, movelegs: &b.movelegs };
+    let programs = camera::Programs {
+        camwatch: &b.camwatch,
+        headsweep: &b.headsweep,
+        camsweep: &b.camsweep,
+        camsweep_nopixel: &b.camsweep_nopixel,
+        camsweep_notrap: &b.camsweep_notrap,
+        movelegs: &b.movelegs,
+    };
     if wanted(Group::Frames) {
         camera::frames(exe, root, &programs, tab, RAW_P50)?;
         model::model(tab, "movelegs: host time per 8 ms frame at --speed max (start-up taken off)");
