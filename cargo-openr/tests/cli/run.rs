@@ -280,6 +280,35 @@ fn a_misaligned_access_faults_where_the_robot_would() {
 }
 
 #[test]
+fn a_long_aligned_to_four_runs_as_on_the_robot_unless_the_build_makes_it_fatal() {
+    let p = build("crash");
+    // The PC's long wants 8 bytes, the robot's is a 4-byte word: no fault.
+    let out = commit_fault(&p, 19, &[]);
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stdout.contains("Crash : word-aligned long = 7"), "{}", out.stdout);
+    // -fno-sanitize-recover: gcc takes the check's handler for one that never returns,
+    // so the access cannot go ahead; the fault says why.
+    let root = crate::support::sdk_root();
+    let flags = format!("CXXFLAGS=-O2 -g -I. -I{0}/OPEN_R/include/R4000 -I{0}/OPEN_R/include -fno-sanitize-recover=alignment", root.display());
+    let (ok, log) = crate::support::run(
+        std::process::Command::new("make")
+            .arg(format!("OPENRSDK_ROOT={}", root.display()))
+            .arg(flags)
+            .args(["clean", "install"])
+            .current_dir(p.dir.path().join("crash")),
+    );
+    assert!(ok, "{log}");
+    let out = commit_fault(&p, 19, &[]);
+    assert_eq!(out.code, Some(128 + 7), "SIGBUS\n{}\n{}", out.stdout, out.stderr);
+    assert!(
+        out.stderr.contains("which the PC wants 8-byte aligned (the robot would not fault; -fno-sanitize-recover made it fatal), at Crash.cc:"),
+        "{}",
+        out.stderr
+    );
+    assert!(!out.stdout.contains("word-aligned long ="), "{}", out.stdout);
+}
+
+#[test]
 fn stack_smash_double_free_and_own_threads_are_reported() {
     let p = build("crash");
     // A return through a smashed frame (default wrapper flags: no stack protector).

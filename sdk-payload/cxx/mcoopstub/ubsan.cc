@@ -6,10 +6,14 @@
 // the object (SIGBUS, with a note for the runtime's crash report) when the robot would
 // have: a word at most needs 4-byte alignment there (LP64's 8-byte long and pointers
 // are 4-byte words on the robot), a double 8 (ldc1/sdc1).  Otherwise it returns and
-// the access goes ahead.
+// the access goes ahead -- except from the _abort handler, which gcc calls instead when
+// the build says -fno-sanitize-recover: gcc assumes that one never returns, so it faults
+// every access misaligned for the PC's type, saying the flag made it fatal.
 #include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <unistd.h>
 
 namespace {
 
@@ -48,19 +52,29 @@ unsigned long robotAlignment(const TypeDescriptor* type, unsigned long hostAlign
     return hostAlignment < 4 ? hostAlignment : 4;
 }
 
-void check(const TypeMismatchData* data, unsigned long pointer)
+// Whether it faulted the object (queued SIGBUS, delivered before this returns).
+bool check(const TypeMismatchData* data, unsigned long pointer, bool mayReturn)
 {
-    if (pointer == 0) return;   // NULL is -fsanitize=null's business, not enabled
-    unsigned long need = robotAlignment(data->type, 1UL << data->logAlignment);
-    if ((pointer & (need - 1)) == 0) return;
+    if (pointer == 0) return false;   // NULL is -fsanitize=null's business, not enabled
+    unsigned long host = 1UL << data->logAlignment;
+    unsigned long need = robotAlignment(data->type, host);
+    bool robotFaults = (pointer & (need - 1)) != 0;
+    if (!robotFaults && (mayReturn || (pointer & (host - 1)) == 0)) return false;
     unsigned int k = data->typeCheckKind;
-    snprintf(note, sizeof(note),
-             "%s address %#lx for type %s, which the robot's CPU needs %lu-byte aligned, at %s:%u:%u",
-             k < sizeof(checkKinds) / sizeof(checkKinds[0]) ? checkKinds[k] : "access to",
-             pointer, data->type->name, need, data->loc.file, data->loc.line, data->loc.column);
+    const char* kind = k < sizeof(checkKinds) / sizeof(checkKinds[0]) ? checkKinds[k] : "access to";
+    if (robotFaults)
+        snprintf(note, sizeof(note),
+                 "%s address %#lx for type %s, which the robot's CPU needs %lu-byte aligned, at %s:%u:%u",
+                 kind, pointer, data->type->name, need, data->loc.file, data->loc.line, data->loc.column);
+    else
+        snprintf(note, sizeof(note),
+                 "%s address %#lx for type %s, which the PC wants %lu-byte aligned (the robot "
+                 "would not fault; -fno-sanitize-recover made it fatal), at %s:%u:%u",
+                 kind, pointer, data->type->name, host, data->loc.file, data->loc.line, data->loc.column);
     union sigval value;
     value.sival_ptr = note;
     pthread_sigqueue(pthread_self(), SIGBUS, value);
+    return true;
 }
 
 } // namespace
@@ -69,12 +83,14 @@ extern "C" {
 
 void __ubsan_handle_type_mismatch_v1(const TypeMismatchData* data, unsigned long pointer)
 {
-    check(data, pointer);
+    check(data, pointer, true);
 }
 
 void __ubsan_handle_type_mismatch_v1_abort(const TypeMismatchData* data, unsigned long pointer)
 {
-    check(data, pointer);
+    // Never return (gcc assumed so): the signal faults the object.
+    if (!check(data, pointer, false)) abort();
+    for (;;) pause();
 }
 
 } // extern "C"

@@ -38,6 +38,7 @@ static const char* const faultName[] = {
     "_exit(3)",
     "NULL pointer write in a thread of its own",
     "print floats (no fault)",
+    "long at an address aligned to 4, not 8 (no fault on the robot)",
 };
 static const int NUM_FAULTS = sizeof(faultName) / sizeof(faultName[0]);
 
@@ -152,6 +153,17 @@ misaligned_access()
     static int words[4];
     volatile int* p = (int*)((char*)words + 2);
     *p = 42;                    // address error (store) on the robot
+    return *p;
+}
+
+// A long is a 4-byte word on the robot: at an address aligned to 4 (not to 8, as the PC's
+// 8-byte long would want) the robot loads and stores it without a fault.
+static long
+word_aligned_long()
+{
+    static long longs[4];
+    volatile long* p = (long*)((char*)longs + 4);
+    *p = 7;
     return *p;
 }
 
@@ -334,6 +346,9 @@ Crash::CommitFault(int fault)
         break;
     case 18:
         print_floats();
+        break;
+    case 19:
+        printf("Crash : word-aligned long = %ld\n", word_aligned_long());
         break;
     }
 }
