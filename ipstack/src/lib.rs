@@ -23,6 +23,7 @@ pub mod config;
 pub mod dns;
 mod poller;
 mod stack;
+mod stream;
 mod sys;
 mod tcp;
 #[cfg(test)]

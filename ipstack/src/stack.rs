@@ -57,8 +57,8 @@ pub struct State {
     pub(super) host: Arc<dyn Host>,
     /// The poll thread's epoll set, which parked operations arm their sockets in.
     pub(super) poller: &'static Poller,
-    /// The earliest delayed Listen error or accept retry (may be stale: an early wake-up is
-    /// harmless).
+    /// The earliest delayed Listen error, accept retry or look at a stream (may be stale:
+    /// an early wake-up is harmless).
     next_deadline: Option<Instant>,
 }
 
@@ -171,7 +171,7 @@ impl State {
             for ep in self.eps.values_mut() {
                 if let Endpoint::Tcp(t) = ep {
                     t.fire_listen_error(now);
-                    if let Some(at) = t.listen_due() {
+                    for at in [t.listen_due(), t.check_stream(now)].into_iter().flatten() {
                         self.next_deadline = Some(self.next_deadline.map_or(at, |d| d.min(at)));
                     }
                 }

@@ -66,6 +66,8 @@ pub struct TcpEp {
     eof: bool,
     /// An error seen while bytes were being delivered: reported by the next receive.
     sticky: Option<i32>,
+    /// Whether big Sends come back to back (TCP_NODELAY off meanwhile).
+    stream: crate::stream::Stream,
 }
 
 /// A host listening socket, shared by every Listen endpoint on its (address, port); in the
@@ -89,6 +91,18 @@ impl TcpEp {
     /// When a delayed Listen error is due.
     pub(super) fn listen_due(&self) -> Option<Instant> {
         self.listen_error.map(|(at, _)| at)
+    }
+
+    /// The poll thread's look at a streaming endpoint (see `stream`): when to look again.
+    pub(super) fn check_stream(&mut self, now: Instant) -> Option<Instant> {
+        let fd = self.fd.as_ref()?.as_raw_fd();
+        self.stream.check(fd, now)
+    }
+
+    /// Whether TCP_NODELAY is off (a stream of big Sends).
+    #[cfg(test)]
+    pub(super) fn joining(&self) -> bool {
+        self.stream.joining()
     }
 
     /// Whether the socket was ever put in the epoll set.
@@ -145,15 +159,27 @@ pub(super) fn tcp_op(st: &mut State, cfg: &NetConfig, p: Pending) {
         }
         op::TCP_SEND => {
             if send(t, valid, p) {
+                let size = req.size as usize;
+                let look = t.fd.as_ref().and_then(|fd| t.stream.before_send(fd.as_raw_fd(), size, Instant::now()));
+                if let Some(at) = look {
+                    st.schedule(at);
+                }
                 progress(st, id);
             }
         }
         op::TCP_RECEIVE => {
             if receive(t, valid, p) {
+                // The program waits for an answer: nothing it sent may wait for an ACK.
+                if let Some(fd) = t.fd.as_ref() {
+                    t.stream.push(fd.as_raw_fd());
+                }
                 progress(st, id);
             }
         }
         op::TCP_CLOSE => {
+            if let Some(fd) = t.fd.as_ref() {
+                t.stream.push(fd.as_raw_fd());
+            }
             let abort = req.flags & 1 != 0;
             if !abort && t.send.is_some() {
                 // Flush first; the Close reply comes after the send's (1.10).
@@ -549,6 +575,9 @@ fn push_send(t: &mut TcpEp, fd: RawFd) -> bool {
     }
     let Some(code) = outcome else { return false };
     let Some(s) = t.send.take() else { return false };
+    if code == tcp::SUCCESS {
+        t.stream.sent(s.size, Instant::now());
+    }
     if code != tcp::SUCCESS && code != tcp::WOULDBLOCK {
         t.sticky.get_or_insert(code);
     }

@@ -80,8 +80,12 @@ fn connected(net: &'static Net, server: &TcpListener) -> (EndpointId, NetResult)
 }
 
 fn shared_buffer(net: &'static Net) -> *mut u8 {
+    shared_buffer_of(net, 100)
+}
+
+fn shared_buffer_of(net: &'static Net, size: i32) -> *mut u8 {
     let mut req = request(PROTO_ENV, op::ENV_CREATE_BUFFER, EndpointId(0));
-    req.value = 100;
+    req.value = size;
     call(net, req).base.cast()
 }
 
@@ -150,4 +154,42 @@ fn a_failing_epoll_wait_is_said_once_and_a_refused_listen_still_fails_on_time() 
     let said = |what: &str| lines.iter().filter(|l| l.contains(what)).count();
     assert_eq!(said("warning: net: the poll thread's epoll_wait failed: Invalid argument (os error 22)"), 1, "{lines:?}");
     assert_eq!(said("warning: net: cannot watch a listening socket (epoll_ctl: Invalid argument (os error 22))"), 1, "{lines:?}");
+}
+
+/// A stream of 8 KiB Sends (ftpd's RETR) arrives whole and in order, and however the
+/// kernel was let join them (see `stream`), the endpoint is back to TCP_NODELAY once the
+/// Sends stop (the poll thread's look) — nothing is left waiting for an ACK.
+#[test]
+fn a_stream_of_big_sends_arrives_whole_and_is_pushed_when_it_stops() {
+    use std::io::Read;
+    const CHUNK: usize = 8192;
+    const CHUNKS: usize = 256;
+    let (net, lines) = start(Poller::new().unwrap());
+    let buf = shared_buffer_of(net, CHUNK as i32);
+    let server = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    let (ep, res) = connected(net, &server);
+    assert_eq!(res.error, tcp::SUCCESS);
+    let (mut peer, _) = server.accept().unwrap();
+    peer.set_read_timeout(Some(PATIENCE)).unwrap();
+    let reader = std::thread::spawn(move || {
+        let mut all = Vec::new();
+        peer.read_to_end(&mut all).map(|_| all)
+    });
+    for k in 0..CHUNKS {
+        // SAFETY: `buf` is a live shared buffer of CHUNK bytes, not in use (the last Send was answered).
+        unsafe { std::ptr::write_bytes(buf, (k % 251) as u8, CHUNK) };
+        let mut send = request(PROTO_TCP, op::TCP_SEND, ep);
+        (send.buffer, send.size) = (buf.cast(), CHUNK as i32);
+        assert_eq!(call(net, send).error, tcp::SUCCESS);
+    }
+    let deadline = Instant::now() + PATIENCE;
+    while net.lock().tcp(ep).unwrap().joining() {
+        assert!(Instant::now() < deadline, "the stream was never pushed");
+        std::thread::sleep(Duration::from_millis(1));
+    }
+    assert_eq!(call(net, request(PROTO_TCP, op::TCP_CLOSE, ep)).error, tcp::SUCCESS);
+    let all = reader.join().unwrap().expect("the peer reads to the end");
+    assert_eq!(all.len(), CHUNK * CHUNKS);
+    assert!(all.chunks(CHUNK).enumerate().all(|(k, c)| c.iter().all(|&b| b == (k % 251) as u8)), "in order");
+    assert!(lines.get().is_empty(), "{:?}", lines.get());
 }
