@@ -100,6 +100,39 @@ pub fn raw_ping_pong(rounds: usize) -> (f64, f64, f64) {
     (rtt[rounds / 2], rtt[rounds * 99 / 100], 2.0 * rounds as f64 / secs)
 }
 
+/// The machine's limit for a hand-off between two threads that are both running: each
+/// spins on a shared word until the other has written it (no system call, no wake-up;
+/// what the runtime's spinning mailboxes come close to). p50 and p99 in ns.
+pub fn spin_ping_pong(rounds: usize) -> (f64, f64) {
+    use std::sync::atomic::{AtomicU32, Ordering};
+    use std::sync::Arc;
+    // Odd: the echo thread's turn; even: the measuring thread's.
+    let word = Arc::new(AtomicU32::new(0));
+    let echo = {
+        let word = word.clone();
+        std::thread::spawn(move || {
+            for i in 0..rounds as u32 {
+                while word.load(Ordering::Acquire) != 2 * i + 1 {
+                    std::hint::spin_loop();
+                }
+                word.store(2 * i + 2, Ordering::Release);
+            }
+        })
+    };
+    let mut rtt = Vec::with_capacity(rounds);
+    for i in 0..rounds as u32 {
+        let t = Instant::now();
+        word.store(2 * i + 1, Ordering::Release);
+        while word.load(Ordering::Acquire) != 2 * i + 2 {
+            std::hint::spin_loop();
+        }
+        rtt.push(t.elapsed().as_nanos() as f64);
+    }
+    let _ = echo.join();
+    rtt.sort_by(|a, b| a.total_cmp(b));
+    (rtt[rounds / 2], rtt[rounds * 99 / 100])
+}
+
 /// Runs `n` runtimes on `ms` at once for `secs` of robot time (real-time speed): the
 /// late-frame percentage over all robots and the slowest robot's lag behind real time
 /// (its wall time, process start included, minus the robot time it ran).
@@ -152,6 +185,9 @@ const NOTIFY_RATE: &str = "object messages per second";
 const RAW_P50: &str = "raw two-thread channel ping-pong p50";
 const RAW_P99: &str = "raw two-thread channel ping-pong p99";
 const RAW_RATE: &str = "raw channel messages per second";
+const SPIN_P50: &str = "raw two-thread spinning ping-pong p50 (both threads running: the machine's limit)";
+const SPIN_P99: &str = "raw two-thread spinning ping-pong p99";
+const NOTIFY_P50_SPIN: &str = "notify→ready round trip p50, beside the spinning ping-pong";
 
 /// The programs a run measures, built once.
 struct Built {
@@ -271,10 +307,14 @@ fn messages(exe: &Path, root: &Path, b: &Built, tab: &mut Table) -> Result<()> {
     tab.push(NOTIFY_P50, get("p50_ns")? / 1000.0, "µs", Some(RAW_P50));
     tab.push(NOTIFY_P99, get("p99_ns")? / 1000.0, "µs", Some(RAW_P99));
     tab.push(NOTIFY_RATE, get("msgs_per_sec")?, "msg/s", Some(RAW_RATE));
+    tab.push(NOTIFY_P50_SPIN, get("p50_ns")? / 1000.0, "µs", Some(SPIN_P50));
     let (p50, p99, rate) = raw_ping_pong(20_000);
     tab.push(RAW_P50, p50 / 1000.0, "µs", None);
     tab.push(RAW_P99, p99 / 1000.0, "µs", None);
     tab.push(RAW_RATE, rate, "msg/s", None);
+    let (p50, p99) = spin_ping_pong(20_000);
+    tab.push(SPIN_P50, p50 / 1000.0, "µs", None);
+    tab.push(SPIN_P99, p99 / 1000.0, "µs", None);
     Ok(())
 }
 
@@ -329,4 +369,17 @@ fn robots(exe: &Path, root: &Path, b: &Built, report: &mut Report) -> Result<()>
     );
     report.sweeps.push(sweep);
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    /// Both references hand the word or message over every round and give sorted,
+    /// positive percentiles (no figure is asserted: they are the machine's).
+    #[test]
+    fn the_raw_ping_pongs_complete_every_round() {
+        let (p50, p99) = super::spin_ping_pong(1000);
+        assert!(p50 > 0.0 && p50 <= p99, "{p50} {p99}");
+        let (p50, p99, rate) = super::raw_ping_pong(1000);
+        assert!(p50 > 0.0 && p50 <= p99 && rate > 0.0, "{p50} {p99} {rate}");
+    }
 }
