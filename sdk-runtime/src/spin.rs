@@ -31,7 +31,7 @@ const PURE_SPIN: Duration = Duration::from_micros(3);
 /// movelegs (host time per frame, 7 runs each): 3 µs → 12.7 µs a frame, 10 → 8–9,
 /// 20 → 5.4–5.5, 50 → 4.8–5.0. Past `PURE_SPIN` the poll yields its core each round,
 /// so on a busy machine it mostly lets others run.
-const SHARED_SPIN: Duration = Duration::from_micros(20);
+const SHARED_SPIN: Duration = Duration::from_micros(50);
 
 /// Empty spins in a row after which a thread spins only on every [`PROBE`]th wait.
 const MISSES: u32 = 3;
