@@ -24,13 +24,15 @@ const DEFAULT_BUDGET: Duration = Duration::from_micros(50);
 /// How long a waiter spins before it also yields its core at each round.
 const PURE_SPIN: Duration = Duration::from_micros(3);
 
-/// How long a waiter that found every slot taken polls before it parks. At `--speed
-/// max` a frame hands the turn along a chain (frame thread → OVirtualRobotComm → the
-/// program's objects → back), one thread holding the slot: the next message often
-/// comes 5–20 µs later, and a park there costs a wake-up of 5–60 µs. Measured with
-/// movelegs (host time per frame, 7 runs each): 3 µs → 12.7 µs a frame, 10 → 8–9,
-/// 20 → 5.4–5.5, 50 → 4.8–5.0. Past `PURE_SPIN` the poll yields its core each round,
-/// so on a busy machine it mostly lets others run.
+/// How long a waiter that found every slot taken polls before it parks (at most the
+/// budget). At `--speed max` a frame hands the turn along a chain (frame thread →
+/// OVirtualRobotComm → the program's objects → back), one thread holding the slot: the
+/// next message often comes 5–20 µs later, and a park there costs a wake-up of 5–60 µs.
+/// Measured with movelegs (host time per frame, 7 runs each): 3 µs → 12.7 µs a frame,
+/// 10 → 8–9, 20 → 5.4–5.5, 50 → 4.8–5.0 (bench, 3 runs: 4.75–4.80; 16 camera robots in
+/// real time still 0 late frames). Past `PURE_SPIN` the poll yields its core each
+/// round, so on a busy machine it mostly lets others run (notify→ready with two CPU
+/// hogs on the 2 cores: 2.9 µs, the blocking channel's 11.8).
 const SHARED_SPIN: Duration = Duration::from_micros(50);
 
 /// Empty spins in a row after which a thread spins only on every [`PROBE`]th wait.
