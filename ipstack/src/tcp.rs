@@ -93,6 +93,13 @@ impl TcpEp {
         self.listen_error.map(|(at, _)| at)
     }
 
+    /// Sends at once what the kernel holds back of a stream (see `stream`).
+    fn push_stream(&mut self) {
+        if let Some(fd) = self.fd.as_ref() {
+            self.stream.push(fd.as_raw_fd());
+        }
+    }
+
     /// The poll thread's look at a streaming endpoint (see `stream`): when to look again.
     pub(super) fn check_stream(&mut self, now: Instant) -> Option<Instant> {
         let fd = self.fd.as_ref()?.as_raw_fd();
@@ -170,16 +177,12 @@ pub(super) fn tcp_op(st: &mut State, cfg: &NetConfig, p: Pending) {
         op::TCP_RECEIVE => {
             if receive(t, valid, p) {
                 // The program waits for an answer: nothing it sent may wait for an ACK.
-                if let Some(fd) = t.fd.as_ref() {
-                    t.stream.push(fd.as_raw_fd());
-                }
+                t.push_stream();
                 progress(st, id);
             }
         }
         op::TCP_CLOSE => {
-            if let Some(fd) = t.fd.as_ref() {
-                t.stream.push(fd.as_raw_fd());
-            }
+            t.push_stream();
             let abort = req.flags & 1 != 0;
             if !abort && t.send.is_some() {
                 // Flush first; the Close reply comes after the send's (1.10).
