@@ -114,32 +114,30 @@ pub fn camera(exe: &Path, root: &Path, p: &Programs, tab: &mut Table) -> Result<
     // Whole programs: 60 s of robot time with the head sweeping all along (every image
     // new), with and without the camera, start-up taken off.
     const SWEEP_S: f64 = 60.0;
-    let (with, out) = max_speed_run_net(exe, p.camsweep, root, SWEEP_S)?;
     let (without, _) = max_speed_run_net(exe, p.headsweep, root, SWEEP_S)?;
+    // A camsweep variant: its seconds, and its host time per image read beyond headsweep's (ms).
+    let sweep = |ms: &Path| -> Result<(f64, f64)> {
+        let (secs, out) = max_speed_run_net(exe, ms, root, SWEEP_S)?;
+        let images = images_read(&out).filter(|&n| n > 0.0).unwrap_or(30.0 * SWEEP_S);
+        Ok((secs, (secs - without).max(0.0) / images * 1e3))
+    };
+    let (with, per_image) = sweep(p.camsweep)?;
     const NO_CAMERA: &str = "headsweep alone at --speed max (60 s, start-up taken off, no camera)";
     tab.push("camsweep: camera program, head sweeping (headsweep + camwatch) at --speed max, 60 s, start-up taken off", SWEEP_S / with, "×", Some(NO_CAMERA));
     tab.push(NO_CAMERA, SWEEP_S / without, "×", None);
-    let images = images_read(&out).filter(|&n| n > 0.0).unwrap_or(30.0 * SWEEP_S);
-    tab.push("host time per camera image, head sweeping ((camsweep − headsweep alone) / images read)", (with - without).max(0.0) / images * 1e3, "ms", None);
+    tab.push("host time per camera image, head sweeping ((camsweep − headsweep alone) / images read)", per_image, "ms", None);
     // The same with camwatch reading no pixel: what is left is the runtime's share of an
     // image (scene, layers, the hand-offs that deliver it), not the program's loop.
-    let (bare, out) = max_speed_run_net(exe, p.camsweep_nopixel, root, SWEEP_S)?;
-    let images = images_read(&out).filter(|&n| n > 0.0).unwrap_or(30.0 * SWEEP_S);
-    tab.push(
-        "host time per camera image, the runtime's share (camsweep with camwatch reading no pixel − headsweep alone)",
-        (bare - without).max(0.0) / images * 1e3,
-        "ms",
-        None,
-    );
-    let (fast, out) = max_speed_run_net(exe, p.camsweep_notrap, root, SWEEP_S)?;
-    let images = images_read(&out).filter(|&n| n > 0.0).unwrap_or(30.0 * SWEEP_S);
+    let (_, per_image) = sweep(p.camsweep_nopixel)?;
+    tab.push("host time per camera image, the runtime's share (camsweep with camwatch reading no pixel − headsweep alone)", per_image, "ms", None);
+    let (fast, per_image) = sweep(p.camsweep_notrap)?;
     tab.push(
         "camsweep with camwatch built without the alignment trap (OPENR_ALIGNMENT_TRAP=0) at --speed max, 60 s, start-up taken off",
         SWEEP_S / fast,
         "×",
         Some(NO_CAMERA),
     );
-    tab.push("host time per camera image, camwatch without the alignment trap", (fast - without).max(0.0) / images * 1e3, "ms", None);
+    tab.push("host time per camera image, camwatch without the alignment trap", per_image, "ms", None);
     let (still, _) = max_speed_run(exe, p.camwatch, root, 60.0)?;
     tab.push("camera program, head still (camwatch) at --speed max, 60 s", 60.0 / still, "×", None);
     Ok(())
