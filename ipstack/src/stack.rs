@@ -156,8 +156,7 @@ impl State {
 
     /// Makes the poll thread wake by `at` (a delayed Listen error, an accept to retry).
     pub(super) fn schedule(&mut self, at: Instant) {
-        if self.next_deadline.is_none_or(|d| at < d) {
-            self.next_deadline = Some(at);
+        if keep_earliest(&mut self.next_deadline, at) {
             self.poller.wake();
         }
     }
@@ -172,16 +171,25 @@ impl State {
                 if let Endpoint::Tcp(t) = ep {
                     t.fire_listen_error(now);
                     for at in [t.listen_due(), t.check_stream(now)].into_iter().flatten() {
-                        self.next_deadline = Some(self.next_deadline.map_or(at, |d| d.min(at)));
+                        keep_earliest(&mut self.next_deadline, at);
                     }
                 }
             }
             if let Some(at) = super::tcp::retry_accepts(self, cfg, now) {
-                self.next_deadline = Some(self.next_deadline.map_or(at, |d| d.min(at)));
+                keep_earliest(&mut self.next_deadline, at);
             }
         }
         self.next_deadline
     }
+}
+
+/// Makes `at` the deadline if it is earlier than `deadline`'s; whether it was.
+fn keep_earliest(deadline: &mut Option<Instant>, at: Instant) -> bool {
+    let earlier = deadline.is_none_or(|d| at < d);
+    if earlier {
+        *deadline = Some(at);
+    }
+    earlier
 }
 
 /// Entry point of every request (caller's thread).

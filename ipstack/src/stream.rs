@@ -10,7 +10,8 @@
 //! TCP_NODELAY off; a small Send, a Receive or a Close turns it back on (which makes the
 //! kernel send what it holds at once), and so does [`PUSH_AFTER`] without a Send, so
 //! that the end of a stream never waits for an acknowledgement (up to 40 ms with a
-//! delayed ACK) — at most this long.
+//! delayed ACK) — about this long (the poll thread's timer counts whole milliseconds:
+//! at most 2 ms).
 use std::os::fd::RawFd;
 use std::time::{Duration, Instant};
 
