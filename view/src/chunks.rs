@@ -15,7 +15,7 @@ use serde_json::{json, Value};
 /// Moments per chunk: about 2 s of a run (a moment every 32 ms sensor frame), ~0.3 MB.
 pub const CHUNK: usize = 64;
 
-fn param<T: std::str::FromStr>(query: &str, name: &str) -> Option<T> {
+pub(crate) fn param<T: std::str::FromStr>(query: &str, name: &str) -> Option<T> {
     query.split('&').find_map(|kv| kv.strip_prefix(name)?.strip_prefix('=')).and_then(|v| v.parse().ok())
 }
 

@@ -140,7 +140,7 @@ fn answer_world(w: &crate::world::Live, req: &Request) -> Reply {
     let (path, query) = req.url.split_once('?').unwrap_or((&req.url, ""));
     match (req.method.as_str(), path) {
         ("GET", "/") => {
-            let k = query.split('&').find_map(|kv| kv.strip_prefix("robot=")).and_then(|v| v.parse::<usize>().ok()).unwrap_or(0);
+            let k = crate::chunks::param::<usize>(query, "robot").unwrap_or(0);
             let initial = w.ask(k, "GET", "/state", b"").ok().and_then(|(_, _, b)| serde_json::from_slice::<serde_json::Value>(&b).ok());
             let world = serde_json::json!({ "robots": w.robots(), "robot": k, "field": w.field(), "truth": w.truth() });
             page(&script_json(&initial.unwrap_or(serde_json::Value::Null)), "null", &script_json(&world))
