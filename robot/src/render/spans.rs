@@ -522,7 +522,8 @@ impl Cuts {
             }
         }
         let mut next = 0;
-        for &(lo, hi) in &self.ranges {
+        // An empty range at the row's end flushes the last span like any other.
+        for &(lo, hi) in self.ranges.iter().chain(&[(self.width, self.width)]) {
             if lo > next {
                 let c = span(next);
                 if c != colour || start == next {
@@ -540,14 +541,6 @@ impl Cuts {
                 }
                 (start, next) = (hi, hi);
             }
-        }
-        if next < self.width {
-            let c = span(next);
-            if c != colour || start == next {
-                flush(row, &mut piece, start, next, colour);
-                (start, colour) = (next, c);
-            }
-            next = self.width;
         }
         flush(row, &mut piece, start, next, colour);
     }
