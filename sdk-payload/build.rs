@@ -19,7 +19,7 @@ fn collect(root: &Path, dir: &Path, out: &mut Vec<(String, String)>) {
 fn main() {
     let manifest = env::var("CARGO_MANIFEST_DIR").unwrap();
     let mut code = String::new();
-    for (name, sub) in [("INCLUDE", "include"), ("CXX", "cxx"), ("SIM", "../sim/mujoco")] {
+    for (name, sub) in [("INCLUDE", "include"), ("CXX", "cxx"), ("PLUGIN", "plugin"), ("SIM", "../sim/mujoco")] {
         let dir = Path::new(&manifest).join(sub);
         println!("cargo:rerun-if-changed={}", dir.display());
         let mut files = Vec::new();

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the host packages cargo-openr needs on Debian/Ubuntu (idempotent, quiet when
 # everything is already there). Used by the README commands and by CI:
-#   * the build: g++ gcc make binutils gzip, python3 (tests and the robot protocol peers),
+#   * the build: g++ gcc make binutils gzip and gcc's plugin headers, python3 (tests and the robot protocol peers),
 #     clangd (the compile database is checked with it), gdb and valgrind (`run --gdb`,
 #     `run --valgrind` and the tests that debug a repaired header or check memcheck);
 #   * the MuJoCo simulator (`cargo openr run --sim mujoco`): Mesa's headless GL (EGL and
@@ -28,6 +28,16 @@ if ((${#need[@]})); then
   echo "installing: ${need[*]}" >&2
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${need[@]}" >/dev/null
+fi
+# gcc's plugin headers, for the alignment trap's plugin (wrappers/src/align_plugin.rs;
+# without them the trap falls back to gcc's own, slower check): the package of the very
+# g++ installed above.
+if ! [ -f "$(g++ -print-file-name=plugin)/include/gcc-plugin.h" ]; then
+  pkg="gcc-$(g++ -dumpversion | cut -d. -f1)-plugin-dev"
+  sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "installing: $pkg" >&2
+  ((${#need[@]})) || $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "$pkg" >/dev/null
 fi
 command -v cargo >/dev/null 2>&1 || { echo "cargo not found: install Rust from your distribution or rustup" >&2; exit 1; }
 # rustfmt: tools/test.sh checks the layout (rustfmt.toml).

@@ -25,7 +25,8 @@ pub(crate) enum Lang {
 /// * `-fsanitize=alignment`: the robot's MIPS CPU faults on a misaligned load or store,
 ///   x86 does not; the check calls libmcoopstub's handler, which faults the object when
 ///   the robot would have (`OPENR_ALIGNMENT_TRAP=0`, or `-fno-sanitize=alignment` in the
-///   user's flags, turns it off).
+///   user's flags, turns it off). The compile itself also loads the SDK root's gcc
+///   plugin ([`crate::align_plugin`]), which makes the check the robot's and cheap.
 pub(crate) fn host_flags(lang: Lang, user: &[OsString]) -> Vec<&'static str> {
     let has_std = user.iter().any(|a| a.to_string_lossy().starts_with("-std="));
     let mut flags = Vec::new();
@@ -41,7 +42,7 @@ pub(crate) fn host_flags(lang: Lang, user: &[OsString]) -> Vec<&'static str> {
         flags.push("-fcommon");
     }
     flags.extend(["-fPIC", "-Dasm(...)="]);
-    if std::env::var_os("OPENR_ALIGNMENT_TRAP").map_or(true, |v| v != "0") {
+    if crate::align_plugin::trap_wanted() {
         flags.push("-fsanitize=alignment");
     }
     flags
@@ -68,6 +69,11 @@ pub(crate) fn run(lang: Lang, args: Vec<OsString>) -> Result<i32, Error> {
     // everything else (stdout, exit status) is the host compiler's own.
     let mut host = host_flags(lang, &args);
     host.extend(crate::sanitize::compile_flags()?);
+    if let Some(plugin) = plugin_flag(&exe) {
+        // One flag for the life of this short process: leaked so that it joins the
+        // static flags the legacy repair reruns the compile with.
+        host.push(Box::leak(plugin.into_boxed_str()));
+    }
     let mut cmd = Command::new(&exe);
     cmd.args(&host).args(&args).stderr(Stdio::piped());
     let out = cmd.spawn().and_then(|c| c.wait_with_output()).map_err(|e| Error::io(PathBuf::from(cmd.get_program()), e))?;
@@ -87,6 +93,16 @@ pub(crate) fn run(lang: Lang, args: Vec<OsString>) -> Result<i32, Error> {
         }
     }
     Ok(out.status.code().unwrap_or(1))
+}
+
+/// `-fplugin=` for the alignment trap when the compile wants the trap and this tool's
+/// SDK root has the plugin built for `compiler`.
+fn plugin_flag(compiler: &std::path::Path) -> Option<String> {
+    if !crate::align_plugin::trap_wanted() {
+        return None;
+    }
+    let root = crate::root::root_from_exe(&std::env::current_exe().ok()?)?;
+    crate::align_plugin::flag(&root, compiler)
 }
 
 /// Finds a host tool: the first set variable of `env_overrides`, else `name` in PATH.

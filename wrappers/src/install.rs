@@ -10,6 +10,7 @@
 //! <root>/OPEN_R/include/**       our OPEN-R headers
 //! <root>/OPEN_R/lib/lib*.a       the runtime's C++ surface, compiled here with host g++
 //! <root>/OPEN_R/src/**           its sources, for debuggers
+//! <root>/libexec/openr-align.so  the alignment trap's gcc plugin (align_plugin.rs)
 //! <root>/OPEN_R/MS_ERS7/...      Memory Stick base trees
 //! <root>/sim/mujoco/*.py,*.xml   the MuJoCo simulator peer (`cargo openr run --sim mujoco`)
 //! ```
@@ -94,7 +95,7 @@ pub fn install_telling(prefix: &Path, exe: &Path, building: impl FnOnce(Building
     let meta = exe_fingerprint(exe);
     let old = fs::read_to_string(prefix.join(STAMP)).unwrap_or_default();
     if meta.is_some() && old.lines().nth(1) == meta.as_deref() {
-        return Ok(Outcome::UpToDate);
+        return refreshed(prefix, false);
     }
     let parent = prefix.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
@@ -106,7 +107,7 @@ pub fn install_telling(prefix: &Path, exe: &Path, building: impl FnOnce(Building
     if old.lines().next() == Some(hash.as_str()) {
         // Same payload from another build of the binary: refresh the fingerprint only.
         write_atomic(&prefix.join(STAMP), stamp.as_bytes())?;
-        return Ok(Outcome::UpToDate);
+        return refreshed(prefix, true);
     }
     if prefix.exists() && !is_sdk_root(prefix) && !is_empty_dir(prefix) {
         return Err(Error::usage(format!("{} exists and is not a cargo-openr SDK root; choose a new or empty directory", prefix.display())));
@@ -120,6 +121,19 @@ pub fn install_telling(prefix: &Path, exe: &Path, building: impl FnOnce(Building
         let _ = fs::remove_dir_all(&staging);
     }
     result.map(|()| Outcome::Installed)
+}
+
+/// An up-to-date root, its alignment plugin rebuilt if the host compiler changed since
+/// (under the install lock, which the caller may hold already).
+fn refreshed(prefix: &Path, locked: bool) -> Result<Outcome, Error> {
+    if crate::align_plugin::needs_rebuild(prefix) {
+        let parent = prefix.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        let _lock = if locked { None } else { Some(lock(parent, prefix)?) };
+        if crate::align_plugin::needs_rebuild(prefix) {
+            crate::align_plugin::build(prefix)?;
+        }
+    }
+    Ok(Outcome::UpToDate)
 }
 
 /// Whether `prefix` holds an SDK root that `install(prefix, exe)` would leave untouched
@@ -216,6 +230,8 @@ fn build_tree(root: &Path, final_root: &Path, exe: &[u8], stamp: &str) -> Result
     write_files(&root.join(SIM_DIR), sdk_files::SIM)?;
     write_files(root, &[(VALGRIND_SUPP, VALGRIND_SUPP_TEXT.as_bytes()), (GDB_INIT, GDB_INIT_TEXT.as_bytes())])?;
     install_tools(root, exe)?;
+    write_files(&root.join(crate::align_plugin::SOURCE_DIR), sdk_files::PLUGIN)?;
+    crate::align_plugin::build(root)?;
     build_archives(root, &include, &src, &map)?;
     build_system_objects(root, &include, &src, &map)?;
     write_base_trees(&root.join("OPEN_R"))?;
@@ -388,6 +404,7 @@ fn build_system_objects(root: &Path, include: &Path, src: &Path, map: &str) -> R
             let o = build.join(unit.file_stem().unwrap_or_default()).with_extension("o");
             let mut cmd = Command::new(&cxx);
             cmd.args(crate::compile::host_flags(crate::compile::Lang::Cxx, &[]))
+                .args(crate::align_plugin::flag(root, &cxx))
                 .args(["-O2", "-g", "-c", map])
                 .arg(format!("-I{}", build.display()))
                 .arg(format!("-I{}", source.display()))

@@ -11,6 +11,7 @@
 //! assert_eq!(tool_for("cargo-openr"), None);
 //! ```
 
+pub mod align_plugin;
 mod binutils;
 mod compile;
 mod error;

@@ -41,7 +41,29 @@ pub fn diagnose(sdk: &Path, exe: &Path) -> Vec<Finding> {
     }
     out.push(mujoco());
     out.push(sdk_root(sdk, exe));
+    if openr_wrappers::install::is_sdk_root(sdk) {
+        out.push(align_plugin(sdk));
+    }
     out
+}
+
+/// The alignment trap's gcc plugin in the root: without it, gcc's own check (same
+/// faults, tight loops about twice as slow).
+fn align_plugin(sdk: &Path) -> Finding {
+    let name = "alignment trap plugin".to_string();
+    match openr_wrappers::align_plugin::status(sdk) {
+        Ok(path) => Finding { name, required: false, ok: true, detail: path.display().to_string(), fix: None },
+        Err(why) => {
+            // Installing the headers is the usual fix; the next `sdk install` (or any
+            // `cargo openr run`/`build`) then builds the plugin into the root.
+            let fix = why
+                .split("apt-get install ")
+                .nth(1)
+                .and_then(|r| r.split(')').next())
+                .map(|pkg| format!("apt-get install {pkg} && cargo openr sdk install --prefix {}", sdk.display()));
+            Finding { name, required: false, ok: false, detail: why, fix: fix.or_else(|| Some(format!("cargo openr sdk install --prefix {}", sdk.display()))) }
+        }
+    }
 }
 
 /// `path (version)` from `tool --version`'s first line.

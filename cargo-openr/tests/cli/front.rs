@@ -279,6 +279,9 @@ fn doctor_reports_the_host_and_the_sdk_root() {
     let sdk = get("SDK root");
     assert_eq!(sdk["ok"], true, "{sdk}");
     assert!(sdk["detail"].as_str().unwrap().contains(root));
+    // deps.sh installs gcc's plugin headers: the root has the alignment trap's plugin.
+    let plugin = get("alignment trap plugin");
+    assert_eq!(plugin["ok"], true, "{plugin}");
     // The tests build programs, so everything required is there: exit 0.
     assert!(out.status.success(), "{}", text(&out));
     let out = cargo_openr(&["doctor", "--sdk", "/nonexistent/sdk"]);

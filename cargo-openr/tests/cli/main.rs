@@ -1,4 +1,5 @@
 //! Integration tests of the `cargo-openr` binary: one test binary, a module per area.
+mod align_trap;
 mod audio;
 mod build;
 mod camera;

@@ -1,0 +1,136 @@
+//! The alignment trap as `mipsel-linux-g++`/`gcc` build it: with the SDK root's gcc
+//! plugin each access is checked against the robot's alignment and a failed check never
+//! returns; without the plugin (a compiler it was not built for, `OPENR_ALIGNMENT_TRAP=ubsan`)
+//! gcc's own check calls a handler that returns. `testdata/align-trap/cases.cc` makes
+//! one misaligned access per case and brings its own handlers, which say which one ran.
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use crate::support::{cargo_openr, sdk_root};
+
+fn testdata(file: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../testdata/align-trap").join(file)
+}
+
+/// Builds `file` with the root's `tool` and `flags` (and `env`) into `dir/name`.
+fn build(root: &Path, tool: &str, file: &str, flags: &[&str], env: &[(&str, &str)], dir: &Path, name: &str) -> PathBuf {
+    let exe = dir.join(name);
+    let mut cmd = Command::new(root.join("bin").join(tool));
+    cmd.args(flags).arg("-o").arg(&exe).arg(testdata(file)).envs(env.iter().copied());
+    let (ok, log) = crate::support::run(&mut cmd);
+    assert!(ok, "{tool} {flags:?} {env:?}: {log}");
+    exe
+}
+
+/// `(exit code, stdout)` of case `n`.
+fn case(exe: &Path, n: u32) -> (Option<i32>, String) {
+    let out = Command::new(exe).arg(n.to_string()).output().unwrap();
+    (out.status.code(), String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
+fn assert_stops(exe: &Path, n: u32, what: &str) {
+    let (code, out) = case(exe, n);
+    assert_eq!((code, out.as_str()), (Some(3), format!("stopped {what}\n").as_str()), "case {n} of {}", exe.display());
+}
+
+fn assert_goes(exe: &Path, n: u32) {
+    let (code, out) = case(exe, n);
+    assert_eq!(code, Some(0), "case {n} of {}: {out}", exe.display());
+    assert!(out.ends_with(&format!("case {n} went through, the handler returned 0 times\n")), "case {n} of {}: {out}", exe.display());
+}
+
+/// A compiler that is g++ but not the binary the root's plugin was built for.
+fn other_gxx(dir: &Path) -> PathBuf {
+    use std::os::unix::fs::PermissionsExt;
+    let script = dir.join("other-g++");
+    std::fs::write(&script, "#!/bin/sh\nexec g++ \"$@\"\n").unwrap();
+    std::fs::set_permissions(&script, std::fs::Permissions::from_mode(0o755)).unwrap();
+    script
+}
+
+#[test]
+fn the_plugin_stops_exactly_what_the_robot_would_and_never_returns() {
+    let root = sdk_root();
+    let dir = tempfile::tempdir().unwrap();
+    let exe = build(root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[], dir.path(), "o2");
+    assert_stops(&exe, 1, "'volatile int' at 2 mod 8");
+    assert_stops(&exe, 2, "'volatile short int' at 1 mod 8");
+    assert_stops(&exe, 3, "'volatile float' at 2 mod 8");
+    assert_stops(&exe, 4, "'volatile double' at 4 mod 8");
+    assert_stops(&exe, 6, "'volatile long int' at 2 mod 8");
+    // Words of the robot at a 4-byte address: a long, a long long, a pointer, a struct
+    // of words, a member summed in a loop. The handler is not even called.
+    for n in [5, 7, 8, 9, 10] {
+        assert_goes(&exe, n);
+    }
+    let (_, out) = case(&exe, 10);
+    assert!(out.starts_with("sum 6400\n"), "{out}");
+    // Unoptimised code and C go through the same pass.
+    let o0 = build(root, "mipsel-linux-g++", "cases.cc", &["-O0"], &[], dir.path(), "o0");
+    assert_stops(&o0, 1, "'volatile int' at 2 mod 8");
+    assert_goes(&o0, 5);
+    let c = build(root, "mipsel-linux-gcc", "cases.c", &["-O2"], &[], dir.path(), "c");
+    assert_stops(&c, 1, "'volatile int' at 2 mod 8");
+    let (code, out) = case(&c, 5);
+    assert_eq!((code, out.as_str()), (Some(0), "case 5 went through\n"));
+}
+
+#[test]
+fn no_sanitize_recover_makes_the_pc_alignment_fatal_with_the_plugin_too() {
+    let dir = tempfile::tempdir().unwrap();
+    let exe = build(sdk_root(), "mipsel-linux-g++", "cases.cc", &["-O2", "-fno-sanitize-recover=alignment"], &[], dir.path(), "fatal");
+    assert_stops(&exe, 5, "'volatile long int' at 4 mod 8");
+    assert_stops(&exe, 1, "'volatile int' at 2 mod 8");
+}
+
+#[test]
+fn without_the_plugin_gcc_checks_the_pc_alignment_and_its_handler_returns() {
+    let root = sdk_root();
+    let dir = tempfile::tempdir().unwrap();
+    let other = other_gxx(dir.path());
+    let builds = [
+        build(root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[("OPENR_ALIGNMENT_TRAP", "ubsan")], dir.path(), "ubsan"),
+        build(root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[("OPENR_HOST_CXX", other.to_str().unwrap())], dir.path(), "other"),
+    ];
+    for exe in &builds {
+        // libmcoopstub's handler decides there (it faults case 1, not case 5).
+        let (code, out) = case(exe, 1);
+        assert_eq!(code, Some(0), "{out}");
+        assert!(out.starts_with("went on after 'volatile int' at 2 mod 8\n"), "{}: {out}", exe.display());
+        // In the loop: at least once per pixel summed (6400), where the plugin never calls.
+        let (_, out) = case(exe, 10);
+        let calls: u32 = out.rsplit("returned ").next().and_then(|t| t.trim_end().strip_suffix(" times")).and_then(|n| n.parse().ok()).unwrap_or(0);
+        assert!(out.contains("went on after 'struct Counter' at 4 mod 8\n") && calls >= 6400, "{out}");
+    }
+}
+
+#[test]
+fn a_root_without_plugin_headers_says_so_and_gets_its_plugin_once_they_are_there() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    // g++ whose plugin headers are not installed.
+    let bare = dir.path().join("bare-g++");
+    std::fs::write(&bare, "#!/bin/sh\n[ \"$1\" = -print-file-name=plugin ] && { echo /nonexistent/plugin; exit 0; }\nexec g++ \"$@\"\n").unwrap();
+    std::fs::set_permissions(&bare, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let root = dir.path().join("sdk");
+    let out = Command::new(crate::support::exe()).args(["sdk", "install", "--prefix"]).arg(&root).env("OPENR_HOST_CXX", &bare).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(!root.join("libexec/openr-align.so").exists());
+    let note = std::fs::read_to_string(root.join("libexec/openr-align.missing")).unwrap();
+    assert!(note.contains("has no plugin headers (apt-get install gcc-"), "{note}");
+    // Objects still build, on gcc's own check.
+    let exe = build(&root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[("OPENR_HOST_CXX", bare.to_str().unwrap())], dir.path(), "bare");
+    assert!(case(&exe, 1).1.starts_with("went on after 'volatile int'"));
+    let out = Command::new(crate::support::exe()).args(["doctor", "--format", "json", "--sdk"]).arg(&root).env("OPENR_HOST_CXX", &bare).output().unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let f = v["findings"].as_array().unwrap().iter().find(|f| f["name"] == "alignment trap plugin").cloned().unwrap_or_default();
+    assert_eq!(f["ok"], false, "{v}");
+    assert!(f["detail"].as_str().unwrap_or_default().contains("has no plugin headers"), "{f}");
+    assert!(f["fix"].as_str().unwrap_or_default().starts_with("apt-get install gcc-"), "{f}");
+    // With the headers there (the plain g++), the next use of the root builds it.
+    let out = cargo_openr(&["sdk", "install", "--prefix", root.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(root.join("libexec/openr-align.so").is_file() && !root.join("libexec/openr-align.missing").exists());
+    let exe = build(&root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[], dir.path(), "rebuilt");
+    assert_stops(&exe, 1, "'volatile int' at 2 mod 8");
+}

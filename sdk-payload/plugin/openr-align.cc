@@ -1,0 +1,183 @@
+// openr-align.cc - a gcc plugin that makes the alignment trap cheap.
+//
+// mipsel-linux-g++ builds with -fsanitize=alignment: the robot's MIPS CPU faults on a
+// misaligned load or store, x86 does not.  gcc puts an internal check (UBSAN_NULL) at
+// every access, checks against the PC's alignment of the type and, at the end of the
+// optimisation pipeline, turns it into a call of a handler that may return (an 8-byte
+// long at a 4-byte address is fine on the robot, whose long is a 4-byte word).  Until
+// then the check counts as a store to any memory, so a loop that adds to a member
+// reloads it from memory on every pass: pixel loops run about twice as slowly.
+//
+// This pass runs right after gcc places the checks and replaces each one by the check
+// the robot would make: the address against the type's alignment on the robot (a word
+// at most 4, a double 8), and on failure a call of the handler that never returns
+// (libmcoopstub's __ubsan_handle_type_mismatch_v1_abort faults the object).  A check
+// that cannot fail is dropped.  The code that follows knows the address was aligned
+// and nothing else: the optimisers keep values in registers and hoist checks out of
+// loops, as without the trap.
+//
+// With -fno-sanitize-recover=alignment the user asked for the PC's alignment to be
+// fatal: then the check keeps the PC's alignment (and the same handler).  With
+// -fsanitize=null (OPENR_SANITIZE=undefined) gcc's own expansion and libubsan's
+// handlers stay: the pass does nothing.
+#include "gcc-plugin.h"
+#include "plugin-version.h"
+#include "backend.h"
+#include "tree.h"
+#include "gimple.h"
+#include "tree-pass.h"
+#include "context.h"
+#include "ssa.h"
+#include "cfghooks.h"
+#include "cfgloop.h"
+#include "gimple-iterator.h"
+#include "tree-into-ssa.h"
+#include "internal-fn.h"
+#include "attribs.h"
+#include "asan.h"
+#include "ubsan.h"
+#include "builtins.h"
+#include "fold-const.h"
+#include "diagnostic-core.h"
+
+int plugin_is_GPL_compatible;
+
+namespace {
+
+// The alignment the robot's CPU needs for an access of `type` that the PC wants
+// `host`-byte aligned: a double 8 (ldc1/sdc1), anything else at most a word.  The same
+// rule as libmcoopstub's handler (ubsan.cc), which words the fault.
+unsigned HOST_WIDE_INT robot_alignment(tree type, unsigned HOST_WIDE_INT host)
+{
+    if (TREE_CODE(type) == REAL_TYPE && TYPE_PRECISION(type) == 64) return 8;
+    return host < 4 ? host : 4;
+}
+
+// Replaces the UBSAN_NULL at `gsi` (an alignment check of `need` bytes) by
+//   t = (uintptr) ptr & (need - 1); if (t != 0) handler_abort (&data, ptr);
+// Returns the block the rest of the original block now lives in.
+basic_block lower(gimple_stmt_iterator* gsi, unsigned HOST_WIDE_INT need)
+{
+    gimple* stmt = gsi_stmt(*gsi);
+    location_t loc = gimple_location(stmt);
+    tree ptr = gimple_call_arg(stmt, 0);
+    tree ckind = gimple_call_arg(stmt, 1);
+    tree align = gimple_call_arg(stmt, 2);
+
+    tree addr = make_ssa_name(pointer_sized_int_node);
+    gimple* g = gimple_build_assign(addr, NOP_EXPR, ptr);
+    gimple_set_location(g, loc);
+    gsi_insert_before(gsi, g, GSI_SAME_STMT);
+    tree low = make_ssa_name(pointer_sized_int_node);
+    g = gimple_build_assign(low, BIT_AND_EXPR, addr, build_int_cst(pointer_sized_int_node, need - 1));
+    gimple_set_location(g, loc);
+    gsi_insert_before(gsi, g, GSI_SAME_STMT);
+
+    // The block is split after the check: the check's block ends in the condition.
+    basic_block cond_bb = gimple_bb(stmt);
+    edge e = split_block(cond_bb, stmt);
+    basic_block rest = e->dest;
+    e->flags = EDGE_FALSE_VALUE;
+    e->probability = profile_probability::always();
+    basic_block fault_bb = create_empty_bb(cond_bb);
+    edge te = make_edge(cond_bb, fault_bb, EDGE_TRUE_VALUE);
+    te->probability = profile_probability::never();
+    e->probability = te->probability.invert();
+    fault_bb->count = te->count();
+    if (dom_info_available_p(CDI_DOMINATORS)) set_immediate_dominator(CDI_DOMINATORS, fault_bb, cond_bb);
+    if (cond_bb->loop_father) add_bb_to_loop(fault_bb, cond_bb->loop_father);
+
+    // The handler call: gcc's data for it (source position, the type, the PC's
+    // alignment, what kind of access), as gcc's own expansion makes it.
+    tree data = ubsan_create_data("__ubsan_null_data", 1, &loc,
+                                  ubsan_type_descriptor(TREE_TYPE(ckind), UBSAN_PRINT_POINTER), NULL_TREE,
+                                  build_int_cst(unsigned_char_type_node, MAX(tree_log2(align), 0)),
+                                  fold_convert(unsigned_char_type_node, ckind), NULL_TREE);
+    data = build_fold_addr_expr_loc(loc, data);
+    tree fn = builtin_decl_explicit(BUILT_IN_UBSAN_HANDLE_TYPE_MISMATCH_V1_ABORT);
+    g = gimple_build_call(fn, 2, data, addr);
+    gimple_set_location(g, loc);
+    gimple_stmt_iterator fgsi = gsi_start_bb(fault_bb);
+    gsi_insert_after(&fgsi, g, GSI_NEW_STMT);
+
+    unlink_stmt_vdef(stmt);
+    g = gimple_build_cond(NE_EXPR, low, build_int_cst(pointer_sized_int_node, 0), NULL_TREE, NULL_TREE);
+    gimple_set_location(g, loc);
+    gsi_replace(gsi, g, false);
+    return rest;
+}
+
+const pass_data align_pass_data = {
+    GIMPLE_PASS,
+    "openr-align",
+    OPTGROUP_NONE,
+    TV_NONE,
+    PROP_ssa | PROP_cfg,
+    0,
+    0,
+    0,
+    TODO_update_ssa_only_virtuals | TODO_cleanup_cfg,
+};
+
+struct align_pass : gimple_opt_pass {
+    align_pass(gcc::context* ctx) : gimple_opt_pass(align_pass_data, ctx) {}
+
+    bool gate(function*) final override
+    {
+        return (flag_sanitize & SANITIZE_ALIGNMENT) && !(flag_sanitize & SANITIZE_NULL);
+    }
+
+    unsigned int execute(function* fun) final override
+    {
+        bool recover = (flag_sanitize_recover & SANITIZE_ALIGNMENT) != 0;
+        bool changed = false;
+        initialize_sanitizer_builtins();
+        basic_block bb;
+        // Blocks made by the splits are visited too (they hold the rest of a block).
+        FOR_EACH_BB_FN(bb, fun)
+        {
+            for (gimple_stmt_iterator gsi = gsi_start_bb(bb); !gsi_end_p(gsi);) {
+                gimple* stmt = gsi_stmt(gsi);
+                if (!gimple_call_internal_p(stmt, IFN_UBSAN_NULL) || integer_zerop(gimple_call_arg(stmt, 2))) {
+                    gsi_next(&gsi);
+                    continue;
+                }
+                tree ptr = gimple_call_arg(stmt, 0);
+                tree type = TREE_TYPE(TREE_TYPE(gimple_call_arg(stmt, 1)));
+                unsigned HOST_WIDE_INT host = tree_to_uhwi(gimple_call_arg(stmt, 2));
+                unsigned HOST_WIDE_INT need = recover ? robot_alignment(type, host) : host;
+                changed = true;
+                if (need <= 1 || get_pointer_alignment(ptr) / BITS_PER_UNIT >= need) {
+                    unlink_stmt_vdef(stmt);
+                    gsi_remove(&gsi, true);
+                    continue;
+                }
+                basic_block rest = lower(&gsi, need);
+                (void)rest;
+                break;   // the rest of this block is the next block of the walk
+            }
+        }
+        if (changed) mark_virtual_operands_for_renaming(fun);
+        return 0;
+    }
+};
+
+} // namespace
+
+int plugin_init(struct plugin_name_args* info, struct plugin_gcc_version* version)
+{
+    if (!plugin_default_version_check(version, &gcc_version)) {
+        error("%s was built for gcc %s, not this gcc %s: reinstall the SDK root "
+              "(cargo openr sdk install)", info->base_name, gcc_version.basever, version->basever);
+        return 1;
+    }
+    struct register_pass_info pass;
+    pass.pass = new align_pass(g);
+    pass.reference_pass_name = "ubsan";
+    pass.ref_pass_instance_number = 1;
+    pass.pos_op = PASS_POS_INSERT_AFTER;
+    register_callback(info->base_name, PLUGIN_PASS_MANAGER_SETUP, NULL, &pass);
+    static struct plugin_info about = {"1", "the robot's alignment trap, checked as the robot does"};
+    register_callback(info->base_name, PLUGIN_INFO, NULL, &about);
+    return 0;
+}
