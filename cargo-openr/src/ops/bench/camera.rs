@@ -96,6 +96,8 @@ pub struct Programs<'a> {
     pub camsweep_nopixel: &'a Path,
     /// headsweep + camwatch compiled without the alignment trap.
     pub camsweep_notrap: &'a Path,
+    /// headsweep + camwatch with gcc's own alignment check instead of the plugin's.
+    pub camsweep_ubsan: &'a Path,
     pub movelegs: &'a Path,
 }
 
@@ -138,6 +140,14 @@ pub fn camera(exe: &Path, root: &Path, p: &Programs, tab: &mut Table) -> Result<
         Some(NO_CAMERA),
     );
     tab.push("host time per camera image, camwatch without the alignment trap", per_image, "ms", None);
+    let (slow, per_image) = sweep(p.camsweep_ubsan)?;
+    tab.push(
+        "camsweep with camwatch on gcc's own alignment check, not the plugin's (OPENR_ALIGNMENT_TRAP=ubsan) at --speed max, 60 s, start-up taken off",
+        SWEEP_S / slow,
+        "×",
+        Some(NO_CAMERA),
+    );
+    tab.push("host time per camera image, camwatch on gcc's own alignment check", per_image, "ms", None);
     let (still, _) = max_speed_run(exe, p.camwatch, root, 60.0)?;
     tab.push("camera program, head still (camwatch) at --speed max, 60 s", 60.0 / still, "×", None);
     Ok(())

@@ -200,6 +200,7 @@ struct Built {
     camsweep: PathBuf,
     camsweep_nopixel: PathBuf,
     camsweep_notrap: PathBuf,
+    camsweep_ubsan: PathBuf,
 }
 
 /// The groups of figures a run measures (`--only`).
@@ -235,6 +236,14 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path, runs: usize, o
     let camera_programs = any(&[Group::Camera, Group::Robots]);
     let camwatch = build_if(camera_programs, programs.join("camwatch"))?;
     let headsweep = build_if(wanted(Group::Camera), programs.join("headsweep"))?;
+    // camsweep with camwatch built with OPENR_ALIGNMENT_TRAP=`trap`.
+    let trap_variant = |name: &str, trap: &str| -> Result<PathBuf> {
+        if !wanted(Group::Camera) {
+            return Ok(PathBuf::new());
+        }
+        let watch = build_into(&programs.join("camwatch"), &work.join(format!("camwatch-{name}")), root, &[("OPENR_ALIGNMENT_TRAP", trap)])?;
+        camera::with_camwatch(&headsweep, &watch, work, &format!("camsweep-{name}"), true)
+    };
     let b = Built {
         pingpong: build_if(any(&[Group::Messages, Group::Frames, Group::Rp]), programs.join("pingpong"))?,
         coldstart: build_if(wanted(Group::Coldstart), programs.join("coldstart"))?,
@@ -243,13 +252,10 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path, runs: usize, o
         camsweep: if wanted(Group::Camera) { camera::with_camwatch(&headsweep, &camwatch, work, "camsweep", true)? } else { PathBuf::new() },
         camsweep_nopixel: if wanted(Group::Camera) { camera::with_camwatch(&headsweep, &camwatch, work, "camsweep-nopixel", false)? } else { PathBuf::new() },
         // camwatch compiled without the check that faults a misaligned access as the
-        // robot's CPU would (`OPENR_ALIGNMENT_TRAP=0`): what that check costs its loop.
-        camsweep_notrap: if wanted(Group::Camera) {
-            let notrap = build_into(&programs.join("camwatch"), &work.join("camwatch-notrap"), root, &[("OPENR_ALIGNMENT_TRAP", "0")])?;
-            camera::with_camwatch(&headsweep, &notrap, work, "camsweep-notrap", true)?
-        } else {
-            PathBuf::new()
-        },
+        // robot's CPU would (`OPENR_ALIGNMENT_TRAP=0`): what that check costs its loop;
+        // and with gcc's own check instead of the plugin's (`=ubsan`).
+        camsweep_notrap: trap_variant("notrap", "0")?,
+        camsweep_ubsan: trap_variant("ubsan", "ubsan")?,
         camwatch,
         headsweep,
     };
@@ -275,6 +281,7 @@ fn one_round(exe: &Path, repo: &Path, root: &Path, work: &Path, b: &Built, wante
         camsweep: &b.camsweep,
         camsweep_nopixel: &b.camsweep_nopixel,
         camsweep_notrap: &b.camsweep_notrap,
+        camsweep_ubsan: &b.camsweep_ubsan,
         movelegs: &b.movelegs,
     };
     if wanted(Group::Frames) {
