@@ -9,6 +9,10 @@
 // the access goes ahead -- except from the _abort handler, which gcc calls instead when
 // the build says -fno-sanitize-recover: gcc assumes that one never returns, so it faults
 // every access misaligned for the PC's type, saying the flag made it fatal.
+//
+// With the SDK root's gcc plugin (sdk-payload/plugin/openr-align.cc, the usual case) the
+// code checks the robot's alignment itself and calls only the _abort handler, only for an
+// access the robot would refuse (or, under -fno-sanitize-recover, the PC's type would).
 #include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
