@@ -85,7 +85,12 @@ basic_block lower(gimple_stmt_iterator* gsi, unsigned HOST_WIDE_INT need)
     e->probability = te->probability.invert();
     fault_bb->count = te->count();
     if (dom_info_available_p(CDI_DOMINATORS)) set_immediate_dominator(CDI_DOMINATORS, fault_bb, cond_bb);
-    if (cond_bb->loop_father) add_bb_to_loop(fault_bb, cond_bb->loop_father);
+    // The fault block never returns to a loop, so it belongs to none but the function's
+    // (the root of the loop tree); its edge leaves any loop the check is in.
+    if (current_loops) {
+        add_bb_to_loop(fault_bb, current_loops->tree_root);
+        loops_state_set(LOOPS_NEED_FIXUP);
+    }
 
     // The handler call: gcc's data for it (source position, the type, the PC's
     // alignment, what kind of access), as gcc's own expansion makes it.

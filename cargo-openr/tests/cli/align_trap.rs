@@ -52,7 +52,8 @@ fn other_gxx(dir: &Path) -> PathBuf {
 fn the_plugin_stops_exactly_what_the_robot_would_and_never_returns() {
     let root = sdk_root();
     let dir = tempfile::tempdir().unwrap();
-    let exe = build(root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[], dir.path(), "o2");
+    // -fchecking=2: gcc verifies the CFG, SSA and loop tree the plugin changed.
+    let exe = build(root, "mipsel-linux-g++", "cases.cc", &["-O2", "-fchecking=2"], &[], dir.path(), "o2");
     assert_stops(&exe, 1, "'volatile int' at 2 mod 8");
     assert_stops(&exe, 2, "'volatile short int' at 1 mod 8");
     assert_stops(&exe, 3, "'volatile float' at 2 mod 8");
@@ -66,10 +67,10 @@ fn the_plugin_stops_exactly_what_the_robot_would_and_never_returns() {
     let (_, out) = case(&exe, 10);
     assert!(out.starts_with("sum 6400\n"), "{out}");
     // Unoptimised code and C go through the same pass.
-    let o0 = build(root, "mipsel-linux-g++", "cases.cc", &["-O0"], &[], dir.path(), "o0");
+    let o0 = build(root, "mipsel-linux-g++", "cases.cc", &["-O0", "-fchecking=2"], &[], dir.path(), "o0");
     assert_stops(&o0, 1, "'volatile int' at 2 mod 8");
     assert_goes(&o0, 5);
-    let c = build(root, "mipsel-linux-gcc", "cases.c", &["-O2"], &[], dir.path(), "c");
+    let c = build(root, "mipsel-linux-gcc", "cases.c", &["-O3", "-fchecking=2"], &[], dir.path(), "c");
     assert_stops(&c, 1, "'volatile int' at 2 mod 8");
     let (code, out) = case(&c, 5);
     assert_eq!((code, out.as_str()), (Some(0), "case 5 went through\n"));
