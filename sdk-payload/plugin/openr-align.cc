@@ -53,6 +53,17 @@ unsigned HOST_WIDE_INT robot_alignment(tree type, unsigned HOST_WIDE_INT host)
     return host < 4 ? host : 4;
 }
 
+// -fsanitize-undefined-trap-on-error (gcc 12) / -fsanitize-trap=alignment (gcc 13 on):
+// a trap instruction instead of the handler, as gcc's own expansion does.
+bool trap_on_error()
+{
+#ifdef flag_sanitize_trap
+    return (flag_sanitize_trap & SANITIZE_ALIGNMENT) != 0;
+#else
+    return flag_sanitize_undefined_trap_on_error != 0;
+#endif
+}
+
 // Replaces the UBSAN_NULL at `gsi` (an alignment check of `need` bytes) by
 //   t = (uintptr) ptr & (need - 1); if (t != 0) handler_abort (&data, ptr);
 // Returns the block the rest of the original block now lives in.
@@ -99,8 +110,10 @@ basic_block lower(gimple_stmt_iterator* gsi, unsigned HOST_WIDE_INT need)
                                   build_int_cst(unsigned_char_type_node, MAX(tree_log2(align), 0)),
                                   fold_convert(unsigned_char_type_node, ckind), NULL_TREE);
     data = build_fold_addr_expr_loc(loc, data);
-    tree fn = builtin_decl_explicit(BUILT_IN_UBSAN_HANDLE_TYPE_MISMATCH_V1_ABORT);
-    g = gimple_build_call(fn, 2, data, addr);
+    if (trap_on_error())
+        g = gimple_build_call(builtin_decl_explicit(BUILT_IN_TRAP), 0);
+    else
+        g = gimple_build_call(builtin_decl_explicit(BUILT_IN_UBSAN_HANDLE_TYPE_MISMATCH_V1_ABORT), 2, data, addr);
     gimple_set_location(g, loc);
     gimple_stmt_iterator fgsi = gsi_start_bb(fault_bb);
     gsi_insert_after(&fgsi, g, GSI_NEW_STMT);

@@ -77,11 +77,18 @@ fn the_plugin_stops_exactly_what_the_robot_would_and_never_returns() {
 }
 
 #[test]
-fn no_sanitize_recover_makes_the_pc_alignment_fatal_with_the_plugin_too() {
+fn the_flags_that_make_the_check_fatal_are_honoured_with_the_plugin_too() {
+    use std::os::unix::process::ExitStatusExt;
     let dir = tempfile::tempdir().unwrap();
+    // -fno-sanitize-recover: the PC's alignment is fatal, an 8-byte long at 4 included.
     let exe = build(sdk_root(), "mipsel-linux-g++", "cases.cc", &["-O2", "-fno-sanitize-recover=alignment"], &[], dir.path(), "fatal");
     assert_stops(&exe, 5, "'volatile long int' at 4 mod 8");
     assert_stops(&exe, 1, "'volatile int' at 2 mod 8");
+    // -fsanitize-undefined-trap-on-error: a trap instruction instead of the handler.
+    let exe = build(sdk_root(), "mipsel-linux-g++", "cases.cc", &["-O2", "-fsanitize-undefined-trap-on-error"], &[], dir.path(), "trap");
+    let out = Command::new(&exe).arg("1").output().unwrap();
+    assert_eq!((out.status.signal(), out.stdout.as_slice()), (Some(libc::SIGILL), &b""[..]), "{out:?}");
+    assert_goes(&exe, 5);
 }
 
 #[test]
