@@ -118,6 +118,12 @@ impl TcpEp {
         self.armed.in_set()
     }
 
+    /// Its socket's descriptor (for the tests' socket options).
+    #[cfg(test)]
+    pub(super) fn raw_fd(&self) -> Option<RawFd> {
+        self.fd.as_ref().map(|f| f.as_raw_fd())
+    }
+
     /// Its socket reported readiness: the kernel disarmed it (one-shot).
     pub(super) fn fired(&mut self) {
         self.armed.fired();

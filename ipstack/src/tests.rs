@@ -1,6 +1,9 @@
 //! The stack from inside: what tests/ cannot reach — whether a socket ever went into the
-//! epoll set, and an epoll set the kernel refuses (every epoll_ctl and epoll_wait fails).
+//! epoll set, an epoll set the kernel refuses (every epoll_ctl and epoll_wait fails), and
+//! the socket options of an endpoint's socket.
+use std::io::Read;
 use std::net::{Ipv4Addr, TcpListener};
+use std::os::fd::{AsRawFd, RawFd};
 use std::sync::{mpsc, Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -93,6 +96,57 @@ fn receive(proto: i32, op: i32, ep: EndpointId, buf: *mut u8) -> Request {
     let mut req = request(proto, op, ep);
     (req.buffer, req.size, req.size_min) = (buf.cast(), 100, 1);
     req
+}
+
+/// A TCP Send of `size` bytes at `buf`.
+fn send(ep: EndpointId, buf: *mut u8, size: usize) -> Request {
+    let mut req = request(PROTO_TCP, op::TCP_SEND, ep);
+    (req.buffer, req.size) = (buf.cast(), size as i32);
+    req
+}
+
+/// The byte at offset `i` of the data the tests send.
+fn pattern(i: usize) -> u8 {
+    (i % 251) as u8
+}
+
+/// A shared buffer of `size` bytes holding [`pattern`].
+fn patterned_buffer(net: &'static Net, size: usize) -> *mut u8 {
+    let buf = shared_buffer_of(net, size as i32);
+    for i in 0..size {
+        // SAFETY: `buf` is a live shared buffer of at least `size` bytes no operation uses yet.
+        unsafe { *buf.add(i) = pattern(i) };
+    }
+    buf
+}
+
+/// The descriptor of TCP endpoint `ep`'s socket.
+fn tcp_fd(net: &'static Net, ep: EndpointId) -> RawFd {
+    net.lock().tcp(ep).and_then(|t| t.raw_fd()).expect("a connected endpoint")
+}
+
+/// A loopback listener whose connections get a small receive window, so that a Send of
+/// a few hundred KiB fills the connection (the host's autotuning would allow tens of MiB).
+fn small_window_listener() -> TcpListener {
+    let server = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    super::sys::set_int_opt(server.as_raw_fd(), libc::SOL_SOCKET, libc::SO_RCVBUF, 4096);
+    server
+}
+
+/// What the peer reads until the end of the connection (or an error).
+fn read_to_end(peer: &mut std::net::TcpStream) -> Vec<u8> {
+    peer.set_read_timeout(Some(PATIENCE)).unwrap();
+    let mut got = Vec::new();
+    let mut chunk = [0u8; 65536];
+    while let Ok(n @ 1..) = peer.read(&mut chunk) {
+        got.extend_from_slice(&chunk[..n]);
+    }
+    got
+}
+
+/// The warnings about a socket the epoll set refused.
+fn refused(lines: &Lines) -> Vec<String> {
+    lines.get().into_iter().filter(|l| l.contains("cannot watch the socket")).collect()
 }
 
 #[test]
@@ -192,4 +246,74 @@ fn a_stream_of_big_sends_arrives_whole_and_is_pushed_when_it_stops() {
     assert_eq!(all.len(), CHUNK * CHUNKS);
     assert!(all.chunks(CHUNK).enumerate().all(|(k, c)| c.iter().all(|&b| b == (k % 251) as u8)), "in order");
     assert!(lines.get().is_empty(), "{:?}", lines.get());
+}
+
+/// A Send whose socket is full and cannot be armed fails at once (TCP_FAIL, said by a
+/// warning) instead of waiting forever; the endpoint is then in error (3.5: ABORTING):
+/// its next Send and Receive fail the same way without touching the socket, and Close
+/// still succeeds. The peer got a part of the data, in order, never more.
+#[test]
+fn a_send_whose_socket_cannot_be_armed_fails_and_the_endpoint_is_in_error() {
+    const SIZE: usize = 1 << 20;
+    let (net, lines) = start(Poller::refusing().unwrap());
+    let buf = patterned_buffer(net, SIZE);
+    let server = small_window_listener();
+    let (ep, res) = connected(net, &server);
+    assert_eq!(res.error, tcp::SUCCESS, "a connect done at once arms nothing");
+    let (mut peer, _) = server.accept().unwrap();
+    super::sys::set_int_opt(tcp_fd(net, ep), libc::SOL_SOCKET, libc::SO_SNDBUF, 4096);
+
+    // The first operation that has to wait: its socket takes a part of the 1 MiB and is full.
+    let res = call(net, send(ep, buf, SIZE));
+    assert_eq!((res.op, res.error), (op::TCP_SEND, tcp::FAIL));
+    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0)]);
+
+    let res = call(net, send(ep, buf, 1));
+    assert_eq!((res.op, res.error), (op::TCP_SEND, tcp::FAIL), "the error sticks");
+    let res = call(net, receive(PROTO_TCP, op::TCP_RECEIVE, ep, buf));
+    assert_eq!((res.op, res.error, res.size), (op::TCP_RECEIVE, tcp::FAIL, 0), "the error sticks");
+    assert_eq!(refused(&lines).len(), 1, "nothing else was armed");
+    assert_eq!(call(net, request(PROTO_TCP, op::TCP_CLOSE, ep)).error, tcp::SUCCESS);
+    assert_eq!(call(net, send(ep, buf, 1)).error, tcp::CONNECTION_CLOSED, "the endpoint is gone");
+
+    let got = read_to_end(&mut peer);
+    assert!(got.len() < SIZE, "the whole Send went out: it never had to wait");
+    assert!(got.iter().enumerate().all(|(i, &b)| b == pattern(i)), "a part of the data, in order");
+}
+
+/// A loopback listener whose accept queue is full (backlog 0 and one connection nobody
+/// accepts): the kernel drops the SYNs of a further connect, which stays in progress.
+fn full_listener() -> (TcpListener, std::net::TcpStream) {
+    let server = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    // SAFETY: plain syscall on a live listening socket (listen again sets its backlog).
+    assert_eq!(unsafe { libc::listen(server.as_raw_fd(), 0) }, 0);
+    let queued = std::net::TcpStream::connect(server.local_addr().unwrap()).unwrap();
+    (server, queued)
+}
+
+/// A Connect still in progress whose socket cannot be armed fails (TCP_FAIL, said by a
+/// warning) instead of waiting forever, and leaves a fresh endpoint: it may connect
+/// again, and closes.
+#[test]
+fn a_pending_connect_whose_socket_cannot_be_armed_fails_and_may_be_tried_again() {
+    let (net, lines) = start(Poller::refusing().unwrap());
+    let (full, _queued) = full_listener();
+    let ep = endpoint(net, PROTO_TCP);
+    let mut req = request(PROTO_TCP, op::TCP_CONNECT, ep);
+    (req.addr, req.port) = (LOOPBACK, full.local_addr().unwrap().port().into());
+    let res = call(net, req);
+    assert_eq!((res.op, res.error), (op::TCP_CONNECT, tcp::FAIL), "a connect done at once would say SUCCESS");
+    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0)]);
+    assert_eq!(call(net, request(PROTO_TCP, op::TCP_ADDRESS, ep)).error, tcp::OPERATION_INVALID, "not connected");
+    assert_eq!(call(net, send(ep, shared_buffer(net), 1)).error, tcp::OPERATION_INVALID, "not connected");
+
+    let server = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    let mut req = request(PROTO_TCP, op::TCP_CONNECT, ep);
+    (req.addr, req.port) = (LOOPBACK, server.local_addr().unwrap().port().into());
+    let res = call(net, req);
+    assert_eq!((res.op, res.error), (op::TCP_CONNECT, tcp::SUCCESS), "the endpoint is new again");
+    let (_, peer) = server.accept().unwrap();
+    assert_eq!(res.lport, u32::from(peer.port()));
+    assert_eq!(call(net, request(PROTO_TCP, op::TCP_CLOSE, ep)).error, tcp::SUCCESS);
+    assert_eq!(refused(&lines).len(), 1);
 }
