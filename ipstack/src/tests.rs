@@ -98,6 +98,12 @@ fn receive(proto: i32, op: i32, ep: EndpointId, buf: *mut u8) -> Request {
     req
 }
 
+/// Submits `req` as a call whose reply goes to `tx`, without waiting for it (the replies
+/// of several requests then come on one channel, in the order the stack gives them).
+fn submit(net: &'static Net, req: Request, tx: &mpsc::SyncSender<NetResult>) {
+    stack::handle(net, Pending { req, target: Target::Sync(tx.clone()), encode, net });
+}
+
 /// A TCP Send of `size` bytes at `buf`.
 fn send(ep: EndpointId, buf: *mut u8, size: usize) -> Request {
     let mut req = request(PROTO_TCP, op::TCP_SEND, ep);
@@ -316,4 +322,47 @@ fn a_pending_connect_whose_socket_cannot_be_armed_fails_and_may_be_tried_again()
     assert_eq!(res.lport, u32::from(peer.port()));
     assert_eq!(call(net, request(PROTO_TCP, op::TCP_CLOSE, ep)).error, tcp::SUCCESS);
     assert_eq!(refused(&lines).len(), 1);
+}
+
+/// A graceful Close waits behind a Send that waits for room. When the socket, writable
+/// again, has taken what it can and cannot be armed again, the Send fails (TCP_FAIL) and
+/// then the Close is answered (TCP_SUCCESS), in that order (1.10); nothing hangs, the
+/// endpoint is gone and the peer got a part of the data, in order.
+#[test]
+fn a_close_behind_a_send_is_answered_after_it_when_the_socket_cannot_be_armed_again() {
+    const SIZE: usize = 1 << 20;
+    let (net, lines) = start(Poller::new().unwrap());
+    let buf = patterned_buffer(net, SIZE);
+    let server = small_window_listener();
+    let (ep, res) = connected(net, &server);
+    assert_eq!(res.error, tcp::SUCCESS);
+    let (mut peer, _) = server.accept().unwrap();
+    // The endpoint's socket, by a descriptor of ours: the stack closes its own meanwhile.
+    // SAFETY: dup of the endpoint's live descriptor; the copy is ours.
+    let same = super::sys::owned(unsafe { libc::dup(tcp_fd(net, ep)) }).unwrap();
+    super::sys::set_int_opt(same.as_raw_fd(), libc::SOL_SOCKET, libc::SO_SNDBUF, 4096);
+
+    let (tx, rx) = mpsc::sync_channel(2);
+    submit(net, send(ep, buf, SIZE), &tx);
+    assert!(rx.try_recv().is_err(), "the Send waits for room");
+    assert!(net.lock().tcp(ep).unwrap().ever_armed(), "its socket is armed");
+    submit(net, request(PROTO_TCP, op::TCP_CLOSE, ep), &tx);
+    assert!(rx.try_recv().is_err(), "the Close waits for the Send");
+
+    net.poller.refuse_from_now();
+    // Room: the kernel says the socket is writable (a bigger send buffer wakes its
+    // waiters), the poll thread writes until it is full again and has to re-arm it.
+    super::sys::set_int_opt(same.as_raw_fd(), libc::SOL_SOCKET, libc::SO_SNDBUF, 65536);
+    let first = rx.recv_timeout(PATIENCE).expect("the Send's reply");
+    assert_eq!((first.op, first.error), (op::TCP_SEND, tcp::FAIL));
+    let second = rx.recv_timeout(PATIENCE).expect("the Close's reply");
+    assert_eq!((second.op, second.error), (op::TCP_CLOSE, tcp::SUCCESS));
+    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0)]);
+    assert_eq!(call(net, send(ep, buf, 1)).error, tcp::CONNECTION_CLOSED, "the endpoint is gone");
+    assert_eq!(net.endpoint_protocol(ep), PROTO_TCP);
+
+    drop(same);
+    let got = read_to_end(&mut peer);
+    assert!(got.len() < SIZE, "the whole Send went out");
+    assert!(got.iter().enumerate().all(|(i, &b)| b == pattern(i)), "a part of the data, in order");
 }
