@@ -366,3 +366,48 @@ fn a_close_behind_a_send_is_answered_after_it_when_the_socket_cannot_be_armed_ag
     assert!(got.len() < SIZE, "the whole Send went out");
     assert!(got.iter().enumerate().all(|(i, &b)| b == pattern(i)), "a part of the data, in order");
 }
+
+/// A UDP Send whose socket cannot take the datagram now and cannot be armed fails
+/// (UDP_FAIL, said by a warning) instead of waiting forever; nothing of it is sent and
+/// the endpoint still closes.
+///
+/// A UDP socket on loopback never says EAGAIN (the loopback device frees the datagram's
+/// memory while it is sent), so the endpoint's descriptor is made a stand-in: a
+/// connected datagram socket whose send buffer is full, which says EAGAIN as a UDP
+/// socket does whose interface queue is full.
+#[test]
+fn a_udp_send_whose_socket_cannot_be_armed_fails() {
+    use std::os::unix::net::UnixDatagram;
+    let (net, lines) = start(Poller::refusing().unwrap());
+    let buf = patterned_buffer(net, 100);
+    let u = endpoint(net, PROTO_UDP);
+    let mut bind = request(PROTO_UDP, op::UDP_BIND, u);
+    bind.addr = LOOPBACK;
+    assert_eq!(call(net, bind).error, udp::SUCCESS);
+    let peer = std::net::UdpSocket::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    let mut connect = request(PROTO_UDP, op::UDP_CONNECT, u);
+    (connect.addr, connect.port) = (LOOPBACK, peer.local_addr().unwrap().port().into());
+    assert_eq!(call(net, connect).error, udp::SUCCESS, "a connected endpoint sends without an address");
+
+    let (stand_in, other) = UnixDatagram::pair().unwrap();
+    stand_in.set_nonblocking(true).unwrap();
+    const FILLER: [u8; 64] = [0xaa; 64];
+    let full = (0..100_000).any(|_| matches!(stand_in.send(&FILLER), Err(e) if e.kind() == std::io::ErrorKind::WouldBlock));
+    assert!(full, "the stand-in's buffer fills");
+    let fd = net.lock().udp(u).and_then(|u| u.raw_fd()).unwrap();
+    // SAFETY: `fd` is the endpoint's live socket descriptor; dup2 makes the same number
+    // the stand-in's (the endpoint closes it with its own socket's number, as before).
+    assert_eq!(unsafe { libc::dup2(stand_in.as_raw_fd(), fd) }, fd);
+
+    let mut send = request(PROTO_UDP, op::UDP_SEND, u);
+    (send.buffer, send.size) = (buf.cast(), 100);
+    let res = call(net, send);
+    assert_eq!((res.op, res.error), (op::UDP_SEND, udp::FAIL));
+    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of UDP endpoint {} (epoll_ctl: Invalid argument (os error 22))", u.0)]);
+    other.set_nonblocking(true).unwrap();
+    let mut dgram = [0u8; 200];
+    while let Ok(n) = other.recv(&mut dgram) {
+        assert_eq!(dgram[..n], FILLER, "only the fillers were sent");
+    }
+    assert_eq!(call(net, request(PROTO_UDP, op::UDP_CLOSE, u)).error, udp::SUCCESS);
+}
