@@ -124,6 +124,14 @@ impl TcpEp {
         self.fd.as_ref().map(|f| f.as_raw_fd())
     }
 
+    /// Puts it in the middle of a stream, TCP_NODELAY off, as two big Sends back to back
+    /// at `now` would (see `stream`).
+    #[cfg(test)]
+    pub(super) fn join_stream(&mut self, now: Instant) {
+        let fd = self.raw_fd().expect("a connected endpoint");
+        self.stream.join(fd, now);
+    }
+
     /// Its socket reported readiness: the kernel disarmed it (one-shot).
     pub(super) fn fired(&mut self) {
         self.armed.fired();

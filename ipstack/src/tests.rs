@@ -1,7 +1,7 @@
 //! The stack from inside: what tests/ cannot reach — whether a socket ever went into the
 //! epoll set, an epoll set the kernel refuses (every epoll_ctl and epoll_wait fails), and
 //! the socket options of an endpoint's socket.
-use std::io::Read;
+use std::io::{Read, Write};
 use std::net::{Ipv4Addr, TcpListener};
 use std::os::fd::{AsRawFd, RawFd};
 use std::sync::{mpsc, Arc, Mutex};
@@ -124,6 +124,16 @@ fn patterned_buffer(net: &'static Net, size: usize) -> *mut u8 {
         unsafe { *buf.add(i) = pattern(i) };
     }
     buf
+}
+
+/// The TCP_NODELAY of socket `fd`, as the kernel has it.
+fn nodelay(fd: RawFd) -> bool {
+    let mut v: libc::c_int = 0;
+    let mut len = std::mem::size_of::<libc::c_int>() as libc::socklen_t;
+    // SAFETY: `v` and `len` are live locals sized for an int option.
+    let r = unsafe { libc::getsockopt(fd, libc::IPPROTO_TCP, libc::TCP_NODELAY, (&mut v as *mut libc::c_int).cast(), &mut len) };
+    assert_eq!(r, 0, "getsockopt: {}", std::io::Error::last_os_error());
+    v != 0
 }
 
 /// The descriptor of TCP endpoint `ep`'s socket.
@@ -410,4 +420,35 @@ fn a_udp_send_whose_socket_cannot_be_armed_fails() {
         assert_eq!(dgram[..n], FILLER, "only the fillers were sent");
     }
     assert_eq!(call(net, request(PROTO_UDP, op::UDP_CLOSE, u)).error, udp::SUCCESS);
+}
+
+/// A Receive and a Close push out what the kernel holds back of a stream of big Sends
+/// (see `stream`): TCP_NODELAY, off in the middle of a stream, is on again at once.
+#[test]
+fn a_receive_and_a_close_push_a_stream_out() {
+    let (net, lines) = start(Poller::new().unwrap());
+    let buf = shared_buffer(net);
+    let server = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    let (ep, res) = connected(net, &server);
+    assert_eq!(res.error, tcp::SUCCESS);
+    let (mut peer, _) = server.accept().unwrap();
+    let fd = tcp_fd(net, ep);
+    assert!(nodelay(fd), "an endpoint's socket has TCP_NODELAY");
+
+    let t0 = Instant::now();
+    net.lock().tcp(ep).unwrap().join_stream(t0);
+    assert!(!nodelay(fd), "in a stream");
+    peer.write_all(b"x").unwrap();
+    let res = call(net, receive(PROTO_TCP, op::TCP_RECEIVE, ep, buf));
+    assert_eq!((res.error, res.size), (tcp::SUCCESS, 1));
+    assert!(nodelay(fd), "a Receive pushes");
+
+    net.lock().tcp(ep).unwrap().join_stream(t0 + Duration::from_millis(10));
+    assert!(!nodelay(fd), "in a stream again");
+    // The same socket, open beyond the endpoint's Close.
+    // SAFETY: dup of the endpoint's live descriptor; the copy is ours.
+    let same = super::sys::owned(unsafe { libc::dup(fd) }).unwrap();
+    assert_eq!(call(net, request(PROTO_TCP, op::TCP_CLOSE, ep)).error, tcp::SUCCESS);
+    assert!(nodelay(same.as_raw_fd()), "a Close pushes");
+    assert!(lines.get().is_empty(), "{:?}", lines.get());
 }
