@@ -82,6 +82,10 @@ pub const OUT: u32 = libc::EPOLLOUT as u32;
 pub struct Poller {
     ep: OwnedFd,
     wake: OwnedFd,
+    /// The tests' switch: every epoll_ctl fails (EINVAL) from now on, while epoll_wait
+    /// still reports what was armed before.
+    #[cfg(test)]
+    refuse_ctl: std::sync::atomic::AtomicBool,
 }
 
 impl Poller {
@@ -90,7 +94,12 @@ impl Poller {
         let ep = sys::owned(unsafe { libc::epoll_create1(libc::EPOLL_CLOEXEC) }).map_err(io::Error::from_raw_os_error)?;
         // SAFETY: as above.
         let wake = sys::owned(unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) }).map_err(io::Error::from_raw_os_error)?;
-        let poller = Poller { ep, wake };
+        let poller = Poller {
+            ep,
+            wake,
+            #[cfg(test)]
+            refuse_ctl: Default::default(),
+        };
         // Level-triggered: it stays readable until drained.
         poller.ctl(libc::EPOLL_CTL_ADD, poller.wake.as_raw_fd(), IN, Token::Wake).map_err(io::Error::from_raw_os_error)?;
         Ok(poller)
@@ -104,10 +113,22 @@ impl Poller {
         let ep = sys::owned(unsafe { libc::eventfd(0, libc::EFD_CLOEXEC) }).map_err(io::Error::from_raw_os_error)?;
         // SAFETY: as above.
         let wake = sys::owned(unsafe { libc::eventfd(0, libc::EFD_NONBLOCK | libc::EFD_CLOEXEC) }).map_err(io::Error::from_raw_os_error)?;
-        Ok(Poller { ep, wake })
+        Ok(Poller { ep, wake, refuse_ctl: Default::default() })
+    }
+
+    /// Makes every later epoll_ctl fail (EINVAL) as `refusing`'s do, while the poll
+    /// thread still gets the events of the sockets armed so far: an operation that was
+    /// parked before is refused when it has to be armed again.
+    #[cfg(test)]
+    pub fn refuse_from_now(&self) {
+        self.refuse_ctl.store(true, std::sync::atomic::Ordering::SeqCst);
     }
 
     fn ctl(&self, op: libc::c_int, fd: RawFd, events: u32, token: Token) -> Result<(), i32> {
+        #[cfg(test)]
+        if self.refuse_ctl.load(std::sync::atomic::Ordering::SeqCst) {
+            return Err(libc::EINVAL);
+        }
         let mut ev = libc::epoll_event { events, u64: token.encode() };
         // SAFETY: `ev` is a live local the kernel only reads.
         sys::check(unsafe { libc::epoll_ctl(self.ep.as_raw_fd(), op, fd, &mut ev) }).map(drop)

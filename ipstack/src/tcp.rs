@@ -118,6 +118,20 @@ impl TcpEp {
         self.armed.in_set()
     }
 
+    /// Its socket's descriptor (for the tests' socket options).
+    #[cfg(test)]
+    pub(super) fn raw_fd(&self) -> Option<RawFd> {
+        self.fd.as_ref().map(|f| f.as_raw_fd())
+    }
+
+    /// Puts it in the middle of a stream, TCP_NODELAY off, as two big Sends back to back
+    /// at `now` would (see `stream`).
+    #[cfg(test)]
+    pub(super) fn join_stream(&mut self, now: Instant) {
+        let fd = self.raw_fd().expect("a connected endpoint");
+        self.stream.join(fd, now);
+    }
+
     /// Its socket reported readiness: the kernel disarmed it (one-shot).
     pub(super) fn fired(&mut self) {
         self.armed.fired();
@@ -478,19 +492,16 @@ pub(super) fn progress(st: &mut State, id: EndpointId) {
         want |= poller::OUT;
     }
     let Err(e) = poller.arm(fd, Token::Ep(id), &mut t.armed, want) else { return };
-    if let Some(p) = t.connect.take() {
+    if t.connect.is_some() {
+        // A fresh endpoint the object may connect again.
         t.attach(None);
         t.phase = TcpPhase::New;
-        p.fail(tcp::FAIL);
     }
-    if let Some(s) = t.send.take() {
+    if t.send.is_some() || t.recv.is_some() {
         t.sticky.get_or_insert(tcp::FAIL);
-        s.p.fail(tcp::FAIL);
     }
-    if let Some(r) = t.recv.take() {
-        t.sticky.get_or_insert(tcp::FAIL);
-        r.p.fail(tcp::FAIL);
-    }
+    // A Connect never waits beside a Send or a Receive (they need an active endpoint).
+    fail_pending(t, tcp::FAIL);
     let closing = t.closing.take();
     st.host.warn(&format!("net: cannot watch the socket of TCP endpoint {} (epoll_ctl: {})", id.0, std::io::Error::from_raw_os_error(e)));
     if let Some(close) = closing {
@@ -652,22 +663,28 @@ fn pull_receive(t: &mut TcpEp, fd: RawFd) {
     }
 }
 
+/// Answers what is pending on the endpoint but a Close with `code`: the Send, the
+/// Receive, the Connect, the Listen, in that order.
+fn fail_pending(t: &mut TcpEp, code: i32) {
+    if let Some(s) = t.send.take() {
+        s.p.fail(code);
+    }
+    if let Some(r) = t.recv.take() {
+        r.p.fail(code);
+    }
+    if let Some(c) = t.connect.take() {
+        c.fail(code);
+    }
+    if let Some(l) = t.listen.take() {
+        l.fail(code);
+    }
+}
+
 fn finish_close(st: &mut State, id: EndpointId, p: Pending, abort: bool) {
     let Some(Endpoint::Tcp(mut t)) = st.eps.remove(&id) else { return p.fail(tcp::CONNECTION_CLOSED) };
     st.remember_closed(id, PROTO_TCP);
     // Everything pending is answered before the Close reply (1.10).
-    if let Some(s) = t.send.take() {
-        s.p.fail(tcp::CONNECTION_CLOSED);
-    }
-    if let Some(r) = t.recv.take() {
-        r.p.fail(tcp::CONNECTION_CLOSED);
-    }
-    if let Some(c) = t.connect.take() {
-        c.fail(tcp::CONNECTION_CLOSED);
-    }
-    if let Some(l) = t.listen.take() {
-        l.fail(tcp::CONNECTION_CLOSED);
-    }
+    fail_pending(&mut t, tcp::CONNECTION_CLOSED);
     if let Some(key) = t.listen_key.take() {
         if let Some(l) = st.listeners.get_mut(&key) {
             l.waiters.retain(|&w| w != id);

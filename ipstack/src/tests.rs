@@ -1,6 +1,9 @@
 //! The stack from inside: what tests/ cannot reach — whether a socket ever went into the
-//! epoll set, and an epoll set the kernel refuses (every epoll_ctl and epoll_wait fails).
+//! epoll set, an epoll set the kernel refuses (every epoll_ctl and epoll_wait fails), and
+//! the socket options of an endpoint's socket.
+use std::io::{Read, Write};
 use std::net::{Ipv4Addr, TcpListener};
+use std::os::fd::{AsRawFd, RawFd};
 use std::sync::{mpsc, Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -93,6 +96,73 @@ fn receive(proto: i32, op: i32, ep: EndpointId, buf: *mut u8) -> Request {
     let mut req = request(proto, op, ep);
     (req.buffer, req.size, req.size_min) = (buf.cast(), 100, 1);
     req
+}
+
+/// Submits `req` as a call whose reply goes to `tx`, without waiting for it (the replies
+/// of several requests then come on one channel, in the order the stack gives them).
+fn submit(net: &'static Net, req: Request, tx: &mpsc::SyncSender<NetResult>) {
+    stack::handle(net, Pending { req, target: Target::Sync(tx.clone()), encode, net });
+}
+
+/// A TCP Send of `size` bytes at `buf`.
+fn send(ep: EndpointId, buf: *mut u8, size: usize) -> Request {
+    let mut req = request(PROTO_TCP, op::TCP_SEND, ep);
+    (req.buffer, req.size) = (buf.cast(), size as i32);
+    req
+}
+
+/// The byte at offset `i` of the data the tests send.
+fn pattern(i: usize) -> u8 {
+    (i % 251) as u8
+}
+
+/// A shared buffer of `size` bytes holding [`pattern`].
+fn patterned_buffer(net: &'static Net, size: usize) -> *mut u8 {
+    let buf = shared_buffer_of(net, size as i32);
+    for i in 0..size {
+        // SAFETY: `buf` is a live shared buffer of at least `size` bytes no operation uses yet.
+        unsafe { *buf.add(i) = pattern(i) };
+    }
+    buf
+}
+
+/// The TCP_NODELAY of socket `fd`, as the kernel has it.
+fn nodelay(fd: RawFd) -> bool {
+    let mut v: libc::c_int = 0;
+    let mut len = std::mem::size_of::<libc::c_int>() as libc::socklen_t;
+    // SAFETY: `v` and `len` are live locals sized for an int option.
+    let r = unsafe { libc::getsockopt(fd, libc::IPPROTO_TCP, libc::TCP_NODELAY, (&mut v as *mut libc::c_int).cast(), &mut len) };
+    assert_eq!(r, 0, "getsockopt: {}", std::io::Error::last_os_error());
+    v != 0
+}
+
+/// The descriptor of TCP endpoint `ep`'s socket.
+fn tcp_fd(net: &'static Net, ep: EndpointId) -> RawFd {
+    net.lock().tcp(ep).and_then(|t| t.raw_fd()).expect("a connected endpoint")
+}
+
+/// A loopback listener whose connections get a small receive window, so that a Send of
+/// a few hundred KiB fills the connection (the host's autotuning would allow tens of MiB).
+fn small_window_listener() -> TcpListener {
+    let server = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    super::sys::set_int_opt(server.as_raw_fd(), libc::SOL_SOCKET, libc::SO_RCVBUF, 4096);
+    server
+}
+
+/// What the peer reads until the end of the connection (or an error).
+fn read_to_end(peer: &mut std::net::TcpStream) -> Vec<u8> {
+    peer.set_read_timeout(Some(PATIENCE)).unwrap();
+    let mut got = Vec::new();
+    let mut chunk = [0u8; 65536];
+    while let Ok(n @ 1..) = peer.read(&mut chunk) {
+        got.extend_from_slice(&chunk[..n]);
+    }
+    got
+}
+
+/// The warnings about a socket the epoll set refused.
+fn refused(lines: &Lines) -> Vec<String> {
+    lines.get().into_iter().filter(|l| l.contains("cannot watch the socket")).collect()
 }
 
 #[test]
@@ -191,5 +261,194 @@ fn a_stream_of_big_sends_arrives_whole_and_is_pushed_when_it_stops() {
     let all = reader.join().unwrap().expect("the peer reads to the end");
     assert_eq!(all.len(), CHUNK * CHUNKS);
     assert!(all.chunks(CHUNK).enumerate().all(|(k, c)| c.iter().all(|&b| b == (k % 251) as u8)), "in order");
+    assert!(lines.get().is_empty(), "{:?}", lines.get());
+}
+
+/// A Send whose socket is full and cannot be armed fails at once (TCP_FAIL, said by a
+/// warning) instead of waiting forever; the endpoint is then in error (3.5: ABORTING):
+/// its next Send and Receive fail the same way without touching the socket, and Close
+/// still succeeds. The peer got a part of the data, in order, never more.
+#[test]
+fn a_send_whose_socket_cannot_be_armed_fails_and_the_endpoint_is_in_error() {
+    const SIZE: usize = 1 << 20;
+    let (net, lines) = start(Poller::refusing().unwrap());
+    let buf = patterned_buffer(net, SIZE);
+    let server = small_window_listener();
+    let (ep, res) = connected(net, &server);
+    assert_eq!(res.error, tcp::SUCCESS, "a connect done at once arms nothing");
+    let (mut peer, _) = server.accept().unwrap();
+    super::sys::set_int_opt(tcp_fd(net, ep), libc::SOL_SOCKET, libc::SO_SNDBUF, 4096);
+
+    // The first operation that has to wait: its socket takes a part of the 1 MiB and is full.
+    let res = call(net, send(ep, buf, SIZE));
+    assert_eq!((res.op, res.error), (op::TCP_SEND, tcp::FAIL));
+    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0)]);
+
+    let res = call(net, send(ep, buf, 1));
+    assert_eq!((res.op, res.error), (op::TCP_SEND, tcp::FAIL), "the error sticks");
+    let res = call(net, receive(PROTO_TCP, op::TCP_RECEIVE, ep, buf));
+    assert_eq!((res.op, res.error, res.size), (op::TCP_RECEIVE, tcp::FAIL, 0), "the error sticks");
+    assert_eq!(refused(&lines).len(), 1, "nothing else was armed");
+    assert_eq!(call(net, request(PROTO_TCP, op::TCP_CLOSE, ep)).error, tcp::SUCCESS);
+    assert_eq!(call(net, send(ep, buf, 1)).error, tcp::CONNECTION_CLOSED, "the endpoint is gone");
+
+    let got = read_to_end(&mut peer);
+    assert!(got.len() < SIZE, "the whole Send went out: it never had to wait");
+    assert!(got.iter().enumerate().all(|(i, &b)| b == pattern(i)), "a part of the data, in order");
+}
+
+/// A loopback listener whose accept queue is full (backlog 0 and one connection nobody
+/// accepts): the kernel drops the SYNs of a further connect, which stays in progress.
+fn full_listener() -> (TcpListener, std::net::TcpStream) {
+    let server = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    // SAFETY: plain syscall on a live listening socket (listen again sets its backlog).
+    assert_eq!(unsafe { libc::listen(server.as_raw_fd(), 0) }, 0);
+    let queued = std::net::TcpStream::connect(server.local_addr().unwrap()).unwrap();
+    (server, queued)
+}
+
+/// A Connect still in progress whose socket cannot be armed fails (TCP_FAIL, said by a
+/// warning) instead of waiting forever, and leaves a fresh endpoint: it may connect
+/// again, and closes.
+#[test]
+fn a_pending_connect_whose_socket_cannot_be_armed_fails_and_may_be_tried_again() {
+    let (net, lines) = start(Poller::refusing().unwrap());
+    let (full, _queued) = full_listener();
+    let ep = endpoint(net, PROTO_TCP);
+    let mut req = request(PROTO_TCP, op::TCP_CONNECT, ep);
+    (req.addr, req.port) = (LOOPBACK, full.local_addr().unwrap().port().into());
+    let res = call(net, req);
+    assert_eq!((res.op, res.error), (op::TCP_CONNECT, tcp::FAIL), "a connect done at once would say SUCCESS");
+    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0)]);
+    assert_eq!(call(net, request(PROTO_TCP, op::TCP_ADDRESS, ep)).error, tcp::OPERATION_INVALID, "not connected");
+    assert_eq!(call(net, send(ep, shared_buffer(net), 1)).error, tcp::OPERATION_INVALID, "not connected");
+
+    let server = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    let mut req = request(PROTO_TCP, op::TCP_CONNECT, ep);
+    (req.addr, req.port) = (LOOPBACK, server.local_addr().unwrap().port().into());
+    let res = call(net, req);
+    assert_eq!((res.op, res.error), (op::TCP_CONNECT, tcp::SUCCESS), "the endpoint is new again");
+    let (_, peer) = server.accept().unwrap();
+    assert_eq!(res.lport, u32::from(peer.port()));
+    assert_eq!(call(net, request(PROTO_TCP, op::TCP_CLOSE, ep)).error, tcp::SUCCESS);
+    assert_eq!(refused(&lines).len(), 1);
+}
+
+/// A graceful Close waits behind a Send that waits for room. When the socket, writable
+/// again, has taken what it can and cannot be armed again, the Send fails (TCP_FAIL) and
+/// then the Close is answered (TCP_SUCCESS), in that order (1.10); nothing hangs, the
+/// endpoint is gone and the peer got a part of the data, in order.
+#[test]
+fn a_close_behind_a_send_is_answered_after_it_when_the_socket_cannot_be_armed_again() {
+    const SIZE: usize = 1 << 20;
+    let (net, lines) = start(Poller::new().unwrap());
+    let buf = patterned_buffer(net, SIZE);
+    let server = small_window_listener();
+    let (ep, res) = connected(net, &server);
+    assert_eq!(res.error, tcp::SUCCESS);
+    let (mut peer, _) = server.accept().unwrap();
+    // The endpoint's socket, by a descriptor of ours: the stack closes its own meanwhile.
+    // SAFETY: dup of the endpoint's live descriptor; the copy is ours.
+    let same = super::sys::owned(unsafe { libc::dup(tcp_fd(net, ep)) }).unwrap();
+    super::sys::set_int_opt(same.as_raw_fd(), libc::SOL_SOCKET, libc::SO_SNDBUF, 4096);
+
+    let (tx, rx) = mpsc::sync_channel(2);
+    submit(net, send(ep, buf, SIZE), &tx);
+    assert!(rx.try_recv().is_err(), "the Send waits for room");
+    assert!(net.lock().tcp(ep).unwrap().ever_armed(), "its socket is armed");
+    submit(net, request(PROTO_TCP, op::TCP_CLOSE, ep), &tx);
+    assert!(rx.try_recv().is_err(), "the Close waits for the Send");
+
+    net.poller.refuse_from_now();
+    // Room: the kernel says the socket is writable (a bigger send buffer wakes its
+    // waiters), the poll thread writes until it is full again and has to re-arm it.
+    super::sys::set_int_opt(same.as_raw_fd(), libc::SOL_SOCKET, libc::SO_SNDBUF, 65536);
+    let first = rx.recv_timeout(PATIENCE).expect("the Send's reply");
+    assert_eq!((first.op, first.error), (op::TCP_SEND, tcp::FAIL));
+    let second = rx.recv_timeout(PATIENCE).expect("the Close's reply");
+    assert_eq!((second.op, second.error), (op::TCP_CLOSE, tcp::SUCCESS));
+    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0)]);
+    assert_eq!(call(net, send(ep, buf, 1)).error, tcp::CONNECTION_CLOSED, "the endpoint is gone");
+    assert_eq!(net.endpoint_protocol(ep), PROTO_TCP);
+
+    drop(same);
+    let got = read_to_end(&mut peer);
+    assert!(got.len() < SIZE, "the whole Send went out");
+    assert!(got.iter().enumerate().all(|(i, &b)| b == pattern(i)), "a part of the data, in order");
+}
+
+/// A UDP Send whose socket cannot take the datagram now and cannot be armed fails
+/// (UDP_FAIL, said by a warning) instead of waiting forever; nothing of it is sent and
+/// the endpoint still closes.
+///
+/// A UDP socket on loopback never says EAGAIN (the loopback device frees the datagram's
+/// memory while it is sent), so the endpoint's descriptor is made a stand-in: a
+/// connected datagram socket whose send buffer is full, which says EAGAIN as a UDP
+/// socket does whose interface queue is full.
+#[test]
+fn a_udp_send_whose_socket_cannot_be_armed_fails() {
+    use std::os::unix::net::UnixDatagram;
+    let (net, lines) = start(Poller::refusing().unwrap());
+    let buf = patterned_buffer(net, 100);
+    let u = endpoint(net, PROTO_UDP);
+    let mut bind = request(PROTO_UDP, op::UDP_BIND, u);
+    bind.addr = LOOPBACK;
+    assert_eq!(call(net, bind).error, udp::SUCCESS);
+    let peer = std::net::UdpSocket::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    let mut connect = request(PROTO_UDP, op::UDP_CONNECT, u);
+    (connect.addr, connect.port) = (LOOPBACK, peer.local_addr().unwrap().port().into());
+    assert_eq!(call(net, connect).error, udp::SUCCESS, "a connected endpoint sends without an address");
+
+    let (stand_in, other) = UnixDatagram::pair().unwrap();
+    stand_in.set_nonblocking(true).unwrap();
+    const FILLER: [u8; 64] = [0xaa; 64];
+    let full = (0..100_000).any(|_| matches!(stand_in.send(&FILLER), Err(e) if e.kind() == std::io::ErrorKind::WouldBlock));
+    assert!(full, "the stand-in's buffer fills");
+    let fd = net.lock().udp(u).and_then(|u| u.raw_fd()).unwrap();
+    // SAFETY: `fd` is the endpoint's live socket descriptor; dup2 makes the same number
+    // the stand-in's (the endpoint closes it with its own socket's number, as before).
+    assert_eq!(unsafe { libc::dup2(stand_in.as_raw_fd(), fd) }, fd);
+
+    let mut send = request(PROTO_UDP, op::UDP_SEND, u);
+    (send.buffer, send.size) = (buf.cast(), 100);
+    let res = call(net, send);
+    assert_eq!((res.op, res.error), (op::UDP_SEND, udp::FAIL));
+    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of UDP endpoint {} (epoll_ctl: Invalid argument (os error 22))", u.0)]);
+    other.set_nonblocking(true).unwrap();
+    let mut dgram = [0u8; 200];
+    while let Ok(n) = other.recv(&mut dgram) {
+        assert_eq!(dgram[..n], FILLER, "only the fillers were sent");
+    }
+    assert_eq!(call(net, request(PROTO_UDP, op::UDP_CLOSE, u)).error, udp::SUCCESS);
+}
+
+/// A Receive and a Close push out what the kernel holds back of a stream of big Sends
+/// (see `stream`): TCP_NODELAY, off in the middle of a stream, is on again at once.
+#[test]
+fn a_receive_and_a_close_push_a_stream_out() {
+    let (net, lines) = start(Poller::new().unwrap());
+    let buf = shared_buffer(net);
+    let server = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).unwrap();
+    let (ep, res) = connected(net, &server);
+    assert_eq!(res.error, tcp::SUCCESS);
+    let (mut peer, _) = server.accept().unwrap();
+    let fd = tcp_fd(net, ep);
+    assert!(nodelay(fd), "an endpoint's socket has TCP_NODELAY");
+
+    let t0 = Instant::now();
+    net.lock().tcp(ep).unwrap().join_stream(t0);
+    assert!(!nodelay(fd), "in a stream");
+    peer.write_all(b"x").unwrap();
+    let res = call(net, receive(PROTO_TCP, op::TCP_RECEIVE, ep, buf));
+    assert_eq!((res.error, res.size), (tcp::SUCCESS, 1));
+    assert!(nodelay(fd), "a Receive pushes");
+
+    net.lock().tcp(ep).unwrap().join_stream(t0 + Duration::from_millis(10));
+    assert!(!nodelay(fd), "in a stream again");
+    // The same socket, open beyond the endpoint's Close.
+    // SAFETY: dup of the endpoint's live descriptor; the copy is ours.
+    let same = super::sys::owned(unsafe { libc::dup(fd) }).unwrap();
+    assert_eq!(call(net, request(PROTO_TCP, op::TCP_CLOSE, ep)).error, tcp::SUCCESS);
+    assert!(nodelay(same.as_raw_fd()), "a Close pushes");
     assert!(lines.get().is_empty(), "{:?}", lines.get());
 }

@@ -28,6 +28,12 @@ impl UdpEp {
         self.armed.fired();
     }
 
+    /// Its socket's descriptor (for the tests' stand-in sockets).
+    #[cfg(test)]
+    pub(super) fn raw_fd(&self) -> Option<RawFd> {
+        self.fd.as_ref().map(|f| f.as_raw_fd())
+    }
+
     /// Whether a pending Send or Receive reads or writes `[base, base+size)`.
     pub(super) fn uses_buffer(&self, base: usize, size: usize) -> bool {
         let inside = |p: usize| p >= base && p < base + size;
