@@ -682,6 +682,9 @@ fn fail_pending(t: &mut TcpEp, code: i32) {
 
 fn finish_close(st: &mut State, id: EndpointId, p: Pending, abort: bool) {
     let Some(Endpoint::Tcp(mut t)) = st.eps.remove(&id) else { return p.fail(tcp::CONNECTION_CLOSED) };
+    // A connection in error is aborting (3.5): its Close resets it like an abort (3.4),
+    // so the peer does not take the part it got for a whole stream.
+    let abort = abort || t.sticky.is_some();
     st.remember_closed(id, PROTO_TCP);
     // Everything pending is answered before the Close reply (1.10).
     fail_pending(&mut t, tcp::CONNECTION_CLOSED);
