@@ -83,6 +83,10 @@ fn gcc33_code_builds_unmodified_with_a_note_per_repair_and_runs() {
         ("Pixels.c", "((unsigned char*)p)++;", "a cast used as an lvalue"),
         ("Pixels.c", "*((unsigned char*)row)++ = value;", "a cast used as an lvalue"),
         ("Pixels.c", "((unsigned char*)row) += step - 1;", "a cast used as an lvalue"),
+        ("Label.cc", "memcpy(buf, part, 4);", "`memcpy` used without its header"),
+        ("Label.cc", "sprintf(buf + 4, \"-%d\", value);", "`sprintf` used without its header"),
+        ("Label.cc", "return atoi(dash + 1);", "`atoi` used without its header"),
+        ("Label.cc", "return std::string(strlwr(buf));", "`strlwr` used without its header"),
     ];
     for (file, snippet, class) in expected {
         let line = line_of(file, snippet);
@@ -123,6 +127,7 @@ fn gcc33_code_builds_unmodified_with_a_note_per_repair_and_runs() {
             "OldCode : track pan -1.5 tilt 10",
             "OldCode : clock ok",
             "OldCode : row sum 60",
+            "OldCode : label head-42 value 42",
             "OldCode : servo 3 scaled 42 four 20 servos 1",
             "OldCode : stop",
         ],

@@ -10,6 +10,7 @@
 mod args;
 mod cast_lvalue;
 mod diag;
+mod headers;
 mod rules;
 mod shadow;
 mod text;
@@ -35,7 +36,7 @@ pub(crate) struct Repaired {
 /// `None`: nothing to repair, or the repaired unit still fails — the caller reports the
 /// original failure. The private directory is gone when this returns.
 pub(crate) fn attempt(exe: &Path, host: &[&str], args: &[OsString], first: &str) -> Option<Repaired> {
-    if !first.lines().filter_map(diag::split_diag).any(|(_, level, msg)| level == "error" && rules::may_repair(msg)) {
+    if !first.lines().filter_map(diag::split_diag).any(|(_, level, msg)| level == "error" && (rules::may_repair(msg) || headers::missing(msg).is_some())) {
         return None;
     }
     let log = std::env::var_os("OPENR_REPAIR_LOG").is_some();
@@ -47,23 +48,71 @@ pub(crate) fn attempt(exe: &Path, host: &[&str], args: &[OsString], first: &str)
     let mut shadow = shadow_of(exe, host, args, unit, &dir.0, log)?;
     let mut notes = Notes::default();
     let mut moves = Moves::default();
+    // C headers the unit is compiled with first (`headers`), through one private header.
+    let mut first_includes: Vec<String> = Vec::new();
+    let first_h = dir.0.join("included-first.h");
     for _ in 0..MAX_ROUNDS {
         shadow.write().ok()?;
-        let out = quiet(exe, host, &args::round(args, unit, &shadow.files[0].path));
+        let first = if first_includes.is_empty() { None } else { Some(first_h.as_path()) };
+        let out = quiet(exe, host, &with_first(first, args::round(args, unit, &shadow.files[0].path)));
         if out.status.success() {
-            return finish(exe, host, args, unit, &shadow, notes);
+            let shift = if first.is_some() { 2 } else { 0 };
+            return finish(exe, host, &with_first(first, args.to_vec()), unit + shift, &shadow, first, notes);
         }
         let stderr = String::from_utf8_lossy(&out.stderr);
         if log {
             eprintln!("[cargo-openr] repair round in {}:\n{stderr}", dir.0.display());
         }
-        let edits = choose(&diag::errors(&stderr), &shadow, &moves, &mut notes, log);
-        if edits.is_empty() {
+        let errors = diag::errors(&stderr);
+        let included = include_first(&errors, &shadow, &mut first_includes, &mut notes);
+        if included {
+            let text: String = first_includes.iter().map(|h| include_line(h)).collect();
+            std::fs::write(&first_h, text).ok()?;
+        }
+        let edits = choose(&errors, &shadow, &moves, &mut notes, log);
+        if edits.is_empty() && !included {
             return None;
         }
         apply(&mut shadow, edits, &mut moves);
     }
     None
+}
+
+/// The `#include` of a header to include first: a C header of the host, or the SDK
+/// root's header of the robot's C library by its path (the unit's include path may
+/// not name the root).
+fn include_line(header: &str) -> String {
+    let root = std::env::current_exe().ok().and_then(|e| crate::root::root_from_exe(&e));
+    match root {
+        Some(root) if header == headers::NEWLIB => format!("#include \"{}\"\n", root.join("OPEN_R/include").join(header).display()),
+        _ => format!("#include <{header}>\n"),
+    }
+}
+
+/// `-include <first>` in front of `args`, when there is a header to include first.
+fn with_first(first: Option<&Path>, args: Vec<OsString>) -> Vec<OsString> {
+    first.into_iter().flat_map(|f| [OsString::from("-include"), f.as_os_str().to_owned()]).chain(args).collect()
+}
+
+/// Adds to `first` the C header of each C library name used undeclared in a user file
+/// (`headers`); whether one was added.
+fn include_first(errors: &[diag::Diag], shadow: &Shadow, first: &mut Vec<String>, notes: &mut Notes) -> bool {
+    let mut added = false;
+    for d in errors {
+        let Some((name, header)) = headers::missing(&d.msg) else { continue };
+        let Some(file) = shadow.find(&d.loc.file) else { continue };
+        if first.contains(&header) {
+            continue;
+        }
+        let text = format!(
+            "{}: note: [cargo-openr] repaired `{name}` used without its header (gcc 3.3's C++ headers included the C library's on the way; gcc 4.3 stopped): compiled with `#include <{header}>` first, in a private copy (your file is unchanged)",
+            d.loc
+        );
+        notes.0.push((file, d.loc.line, d.loc.col, text));
+        first.push(header);
+        added = true;
+    }
+    added
 }
 
 /// The shadow copies of the unit's user files, from the include tree of a preprocessing run.
@@ -126,13 +175,13 @@ fn choose(errors: &[diag::Diag], shadow: &Shadow, moves: &Moves, notes: &mut Not
 }
 
 /// The real compile of the repaired shadow unit (stdout is the user's).
-fn finish(exe: &Path, host: &[&str], args: &[OsString], unit: usize, shadow: &Shadow, mut notes: Notes) -> Option<Repaired> {
+fn finish(exe: &Path, host: &[&str], args: &[OsString], unit: usize, shadow: &Shadow, first: Option<&Path>, mut notes: Notes) -> Option<Repaired> {
     let out = Command::new(exe).args(host).args(args::final_compile(args, unit, &shadow.files[0].path)).stderr(Stdio::piped()).output().ok()?;
     if !out.status.success() {
         return None;
     }
     if let Some(d) = args::depfile(args, unit) {
-        shadow.fix_depfile(&d);
+        shadow.fix_depfile(&d, first);
     }
     notes.0.sort();
     let mut stderr: String = notes.0.into_iter().map(|n| n.3 + "\n").collect();

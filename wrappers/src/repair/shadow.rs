@@ -145,10 +145,14 @@ impl Shadow {
     }
 
     /// Rewrites the shadow paths in a `-MD` dependency file back to the user's files.
-    pub fn fix_depfile(&self, depfile: &Path) {
+    pub fn fix_depfile(&self, depfile: &Path, private: Option<&Path>) {
         let Ok(mut text) = std::fs::read_to_string(depfile) else { return };
         for f in &self.files {
             text = text.replace(&*f.path.to_string_lossy(), &f.name);
+        }
+        // A private header (gone after the compile) is no prerequisite, nor a -MP target.
+        if let Some(p) = private.map(|p| p.to_string_lossy().into_owned()) {
+            text = text.replace(&format!(" {p}"), "").lines().filter(|l| !l.starts_with(&format!("{p}:"))).map(|l| format!("{l}\n")).collect();
         }
         let _ = std::fs::write(depfile, text);
     }

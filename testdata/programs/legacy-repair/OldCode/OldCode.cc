@@ -13,6 +13,7 @@
 //   Clock.cc       "int ::GetNowMSec();"
 //   OldCode.cc     ios::nocreate
 //   Pixels.c       casts used as lvalues (C, mipsel-linux-gcc)
+//   Label.cc       C library functions without their headers
 //
 // Permissive.h/.cc holds habits that -fpermissive still accepts.
 //
@@ -32,6 +33,8 @@
 int FindFirst(const int* values, int num, int key);
 int CountAbove(const int* values, int num, int limit);
 int GetNowMSec();
+std::string MakeLabel(const char* part, int value);
+int LabelValue(const std::string& label);
 
 static const char* const CONFIG_FILE = "/MS/OPEN-R/MW/CONF/OLDCODE.CFG";
 
@@ -86,6 +89,9 @@ OldCode::DoStart(const OSystemEvent& event)
     unsigned char row[8] = { 1, 2, 3, 4, 5, 6, 7, 8 };
     FillRow(row, 8, 2, 10);
     cout << "OldCode : row sum " << SumRow(row, 8) << endl;
+
+    std::string label = MakeLabel("HEADPAN", 42);
+    cout << "OldCode : label " << label << " value " << LabelValue(label) << endl;
 
     Servo servo(3);
     Quadrupler<int> quad;

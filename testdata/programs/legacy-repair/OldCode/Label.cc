@@ -1,0 +1,27 @@
+//
+// Label.cc : formats a sensor label and parses it back.
+//
+// Only <string> is included: with gcc 3.3 it brought <cstring>, <cstdlib>,
+// <climits> and <cstdio> along, so memcpy, atoi, INT_MAX, sprintf and
+// std::strlen needed no header of their own, and newlib's <string.h> had
+// strlwr. gcc 4.3 stopped that; glibc never had strlwr.
+//
+#include <string>
+
+std::string
+MakeLabel(const char* part, int value)
+{
+    char buf[32];
+    memcpy(buf, part, 4);
+    buf[4] = '\0';
+    sprintf(buf + 4, "-%d", value);
+    return std::string(strlwr(buf));
+}
+
+int
+LabelValue(const std::string& label)
+{
+    const char* dash = strchr(label.c_str(), '-');
+    if (dash == 0 || std::strlen(dash) < 2) return INT_MAX;
+    return atoi(dash + 1);
+}
