@@ -84,8 +84,8 @@ fn gcc33_code_builds_unmodified_with_a_note_per_repair_and_runs() {
         ("Pixels.c", "*((unsigned char*)row)++ = value;", "a cast used as an lvalue"),
         ("Pixels.c", "((unsigned char*)row) += step - 1;", "a cast used as an lvalue"),
         ("Label.cc", "memcpy(buf, part, 4);", "`memcpy` used without its header"),
-        ("Label.cc", "sprintf(buf + 4, \"-%d\", value);", "`sprintf` used without its header"),
-        ("Label.cc", "return atoi(dash + 1);", "`atoi` used without its header"),
+        ("Label.cc", "sprintf(buf + 4, \"-%d\", abs(value));", "used without its header"),
+        ("Label.cc", "return reader.As<int>(s);", "a member template of a dependent type called without `template`"),
         ("Label.cc", "return std::string(strlwr(buf));", "`strlwr` used without its header"),
     ];
     for (file, snippet, class) in expected {

@@ -55,8 +55,15 @@ pub(crate) fn errors(stderr: &str) -> Vec<Diag> {
         }
         let Some((loc, level, msg)) = split_diag(line) else { continue };
         let diag = Diag { loc, msg: msg.to_string(), fixits: Vec::new(), notes: Vec::new() };
+        // The warning at a dependent member template without `template` is where the
+        // parse went wrong: it leads the errors that follow it.
+        let leads = level == "warning" && msg.replace(['\u{2018}', '\u{2019}'], "'").starts_with(super::rules::MISSING_TEMPLATE_KEYWORD);
         to = match (level, out.last_mut()) {
             ("error" | "fatal error", _) => {
+                out.push(diag);
+                To::Error
+            }
+            _ if leads => {
                 out.push(diag);
                 To::Error
             }

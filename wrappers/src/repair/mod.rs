@@ -36,7 +36,12 @@ pub(crate) struct Repaired {
 /// `None`: nothing to repair, or the repaired unit still fails — the caller reports the
 /// original failure. The private directory is gone when this returns.
 pub(crate) fn attempt(exe: &Path, host: &[&str], args: &[OsString], first: &str) -> Option<Repaired> {
-    if !first.lines().filter_map(diag::split_diag).any(|(_, level, msg)| level == "error" && (rules::may_repair(msg) || headers::missing(msg).is_some())) {
+    let repairable = |level: &str, msg: &str| match level {
+        "error" => rules::may_repair(msg) || headers::missing(msg).is_some(),
+        "warning" => msg.replace(['\u{2018}', '\u{2019}'], "'").starts_with(rules::MISSING_TEMPLATE_KEYWORD),
+        _ => false,
+    };
+    if !first.lines().filter_map(diag::split_diag).any(|(_, level, msg)| repairable(level, msg)) {
         return None;
     }
     let log = std::env::var_os("OPENR_REPAIR_LOG").is_some();

@@ -21,6 +21,7 @@ pub(crate) enum Class {
     GlobalQualifiedDeclaration,
     IosNocreate,
     CastAsLvalue,
+    TemplateKeyword,
 }
 
 /// Whether g++'s message names a legacy class itself; otherwise (a name not declared, a
@@ -45,6 +46,7 @@ impl Class {
             Class::GlobalQualifiedDeclaration => "a first declaration with a qualified name `::f` (accepted by gcc 3.3)",
             Class::IosNocreate => "the pre-standard open mode `ios::nocreate` (gcc 3.3's <fstream.h>)",
             Class::CastAsLvalue => "a cast used as an lvalue (a GNU extension of gcc 3.3, removed in gcc 4.0)",
+            Class::TemplateKeyword => "a member template of a dependent type called without `template` (accepted by gcc 3.3; required since gcc 3.4)",
         }
     }
 }
@@ -66,6 +68,10 @@ pub(crate) struct Repair {
     pub edits: Vec<Edit>,
 }
 
+/// g++'s warning at a dependent member template called without `template`
+/// (`u.get<int>()` in a template): the errors that follow are its consequences.
+pub(crate) const MISSING_TEMPLATE_KEYWORD: &str = "expected 'template' keyword before dependent template name";
+
 /// Whether an error message may be of a repairable class (the gate before any shadow
 /// copy is made; the rules decide).
 pub(crate) fn may_repair(msg: &str) -> bool {
@@ -80,6 +86,7 @@ pub(crate) fn may_repair(msg: &str) -> bool {
         || m.starts_with("explicit qualification in declaration of")
         || m.starts_with("'nocreate' is not a member of")
         || m.starts_with("lvalue required as ")
+        || m.starts_with(MISSING_TEMPLATE_KEYWORD)
 }
 
 /// The repair of one error, if it is of a known class.
@@ -111,6 +118,13 @@ pub(crate) fn repair(d: &Diag, shadow: &Shadow) -> Option<Repair> {
     }
     if m.contains("does not name a type") {
         return dependent_base_type(d, src, file, at);
+    }
+    if m.starts_with(MISSING_TEMPLATE_KEYWORD) {
+        return (src.ident_at(at) != "template").then(|| Repair {
+            class: Class::TemplateKeyword,
+            how: "with `template` added".into(),
+            edits: vec![Edit { file, from: at, to: at, text: "template ".into() }],
+        });
     }
     if m.contains("was not declared in this scope") {
         let name = *names.first()?;
