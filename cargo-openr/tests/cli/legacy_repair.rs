@@ -86,6 +86,7 @@ fn gcc33_code_builds_unmodified_with_a_note_per_repair_and_runs() {
         ("Label.cc", "memcpy(buf, part, 4);", "`memcpy` used without its header"),
         ("Label.cc", "sprintf(buf + 4, \"-%d\", abs(value));", "used without its header"),
         ("Label.cc", "return reader.As<int>(s);", "a member template of a dependent type called without `template`"),
+        ("Label.cc", "template Span<int>;", "an explicit instantiation `template A<int>;` without `class`"),
         ("Label.cc", "return std::string(strlwr(buf));", "`strlwr` used without its header"),
     ];
     for (file, snippet, class) in expected {

@@ -22,6 +22,7 @@ pub(crate) enum Class {
     IosNocreate,
     CastAsLvalue,
     TemplateKeyword,
+    ClasslessInstantiation,
 }
 
 /// Whether g++'s message names a legacy class itself; otherwise (a name not declared, a
@@ -46,6 +47,7 @@ impl Class {
             Class::GlobalQualifiedDeclaration => "a first declaration with a qualified name `::f` (accepted by gcc 3.3)",
             Class::IosNocreate => "the pre-standard open mode `ios::nocreate` (gcc 3.3's <fstream.h>)",
             Class::CastAsLvalue => "a cast used as an lvalue (a GNU extension of gcc 3.3, removed in gcc 4.0)",
+            Class::ClasslessInstantiation => "an explicit instantiation `template A<int>;` without `class` (accepted by gcc 3.3; an error since gcc 3.4)",
             Class::TemplateKeyword => "a member template of a dependent type called without `template` (accepted by gcc 3.3; required since gcc 3.4)",
         }
     }
@@ -87,6 +89,7 @@ pub(crate) fn may_repair(msg: &str) -> bool {
         || m.starts_with("'nocreate' is not a member of")
         || m.starts_with("lvalue required as ")
         || m.starts_with(MISSING_TEMPLATE_KEYWORD)
+        || m.starts_with("expected unqualified-id before ';' token")
 }
 
 /// The repair of one error, if it is of a known class.
@@ -118,6 +121,9 @@ pub(crate) fn repair(d: &Diag, shadow: &Shadow) -> Option<Repair> {
     }
     if m.contains("does not name a type") {
         return dependent_base_type(d, src, file, at);
+    }
+    if m.starts_with("expected unqualified-id before ';' token") {
+        return classless_instantiation(src, file, at);
     }
     if m.starts_with(MISSING_TEMPLATE_KEYWORD) {
         return (src.ident_at(at) != "template").then(|| Repair {
@@ -383,6 +389,34 @@ fn dependent_base_name(src: &Source, file: usize, at: usize, name: &str) -> Opti
 
 /// The start of the qualified name (`RingTraits<T>::const_reference`) whose last
 /// component starts at `at`.
+/// `template A<int>;` (the `;` at `at`): the statement is `template`, a class template's
+/// name and its arguments, nothing else. `class` goes after `template`.
+fn classless_instantiation(src: &Source, file: usize, at: usize) -> Option<Repair> {
+    let code = &src.code;
+    let start = code[..at].iter().rposition(|&b| matches!(b, b';' | b'{' | b'}')).map_or(0, |i| i + 1);
+    let stmt = std::str::from_utf8(&code[start..at]).ok()?;
+    let lead = stmt.len() - stmt.trim_start().len();
+    let rest = stmt.trim_start().strip_prefix("template")?;
+    let name_at = rest.len() - rest.trim_start().len();
+    let rest = rest.trim();
+    if name_at == 0 {
+        return None;
+    }
+    let name_end = rest.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == ':' || c.is_whitespace())).unwrap_or(rest.len());
+    let name = rest[..name_end].trim();
+    let args = rest[name_end..].trim();
+    let ident = |w: &str| w.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') && !matches!(w, "class" | "struct" | "union");
+    if !ident(name) || name.contains(char::is_whitespace) || !args.starts_with('<') || !args.ends_with('>') || args.contains(['(', '=']) {
+        return None;
+    }
+    let pos = start + lead + "template".len() + name_at;
+    Some(Repair {
+        class: Class::ClasslessInstantiation,
+        how: "with `class` added".into(),
+        edits: vec![Edit { file, from: pos, to: pos, text: "class ".into() }],
+    })
+}
+
 fn qualified_start(src: &Source, at: usize) -> usize {
     let code = &src.code;
     let mut start = at;
@@ -493,5 +527,32 @@ mod tests {
         let at = src.offset(2, 31).unwrap();
         let r = parameter_type(&src, 0, at).expect("repaired");
         assert_eq!(r.edits[0].from, src.offset(2, 7).unwrap());
+    }
+
+    #[test]
+    fn only_a_bare_template_name_and_arguments_is_an_instantiation_without_class() {
+        let fixed = |text: &str| {
+            let src = Source::new(text.into());
+            let at = text.rfind(';').unwrap();
+            classless_instantiation(&src, 0, at).map(|r| {
+                let mut t = text.to_string();
+                t.insert_str(r.edits[0].from, &r.edits[0].text);
+                t
+            })
+        };
+        assert_eq!(
+            fixed(
+                "int x;
+template A<int>;"
+            )
+            .as_deref(),
+            Some("int x;\ntemplate class A<int>;")
+        );
+        assert_eq!(fixed("}\n  template  geo::Vec<float, 3> ;").as_deref(), Some("}\n  template  class geo::Vec<float, 3> ;"));
+        assert_eq!(fixed("/* template */ x = template_y<3>;"), None);
+        assert_eq!(fixed("template A<int> a;"), None);
+        assert_eq!(fixed("template int f<int>(int);"), None);
+        assert_eq!(fixed("template<class T> A<T>;"), None);
+        assert_eq!(fixed("templateA<int>;"), None);
     }
 }

@@ -8,7 +8,8 @@
 //
 // Parse calls a member template of a dependent type without "template"
 // ("reader.As<int>(s)"): gcc 3.3 accepted it, gcc 3.4 requires
-// "reader.template As<int>(s)".
+// "reader.template As<int>(s)". "template Span<int>;" instantiates a class
+// template explicitly without "class", which gcc 3.4 requires too.
 //
 #include <string>
 
@@ -33,10 +34,18 @@ Parse(const Reader& reader, const char* s)
     return reader.As<int>(s);
 }
 
+template <class T>
+struct Span {
+    T from, to;
+    T Length() const { return to - from; }
+};
+template Span<int>;
+
 int
 LabelValue(const std::string& label)
 {
     const char* dash = strchr(label.c_str(), '-');
     if (dash == 0 || std::strlen(dash) < 2) return INT_MAX;
-    return Parse(Fields(), dash + 1);
+    Span<int> digits = { 0, (int)std::strlen(dash + 1) };
+    return digits.Length() > 0 ? Parse(Fields(), dash + 1) : 0;
 }
