@@ -18,6 +18,11 @@ pub(crate) enum Lang {
 ///   `static const double` initialisers, C++14 drops `gets`. Only added when the
 ///   Makefile chose no `-std=` itself.
 /// * `-fpermissive`: LP64 `(int)voidptr` casts and other gcc-3.3 leniencies are warnings.
+/// * `-fsanitize=unreachable` (C++): a function that flows off its end without a return
+///   returns whatever the register holds, as with gcc 3.3 (and as real AIBO code relies
+///   on); g++ 8 and later otherwise take the end for unreachable and run into the code
+///   that follows. The code stays as fast: only a `__builtin_unreachable()` the program
+///   reaches calls libmcoopstub's handler, which faults the object saying where.
 /// * `-fPIC`: every object, archive member included, ends up in a shared object.
 /// * `-Dasm(...)=`: MIPS inline assembly (e.g. `asm("mfc0 $2, $12")`) cannot run on the
 ///   host; glibc and libstdc++ spell theirs `__asm__`, which stays intact.
@@ -37,7 +42,7 @@ pub(crate) fn host_flags(lang: Lang, user: &[OsString]) -> Vec<&'static str> {
         });
     }
     if lang == Lang::Cxx {
-        flags.push("-fpermissive");
+        flags.extend(["-fpermissive", "-fsanitize=unreachable"]);
     } else {
         flags.push("-fcommon");
     }

@@ -210,7 +210,7 @@ fn env_lists_what_the_build_sees() {
     let out = cargo_openr(&["env", "--sdk", root]);
     let sh = String::from_utf8_lossy(&out.stdout);
     assert!(sh.contains(&format!("export OPENRSDK_ROOT='{root}'\n")), "{sh}");
-    assert!(sh.contains("export OPENR_CXXFLAGS='-std=gnu++98 -fpermissive -fPIC -Dasm(...)= -fsanitize=alignment'"), "{sh}");
+    assert!(sh.contains("export OPENR_CXXFLAGS='-std=gnu++98 -fpermissive -fsanitize=unreachable -fPIC -Dasm(...)= -fsanitize=alignment'"), "{sh}");
     // What `sh` evaluates is what the JSON says.
     let (ok, echoed) = run(Command::new("sh").arg("-c").arg(format!("{sh}\nprintf %s \"$OPENR_CXXFLAGS\"")));
     assert!(ok);

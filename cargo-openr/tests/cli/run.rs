@@ -280,6 +280,22 @@ fn a_misaligned_access_faults_where_the_robot_would() {
 }
 
 #[test]
+fn a_function_without_a_return_returns_as_with_gcc_3_3() {
+    let p = build("crash");
+    // g++ 12 alone takes the end of such a function for unreachable: the call ran on
+    // into the next function's code and crashed (SIGSEGV).
+    let out = commit_fault(&p, 20, &[]);
+    assert_eq!(out.code, Some(0), "{}\n{}", out.stdout, out.stderr);
+    assert!(out.stdout.contains("Crash : servos 1..3\nCrash : count_servos returned\nCrash : survived fault 20\n"), "{}", out.stdout);
+    // A __builtin_unreachable() the program reaches faults it, saying where.
+    let out = commit_fault(&p, 21, &[]);
+    assert_eq!(out.code, Some(128 + 4), "SIGILL\n{}\n{}", out.stdout, out.stderr);
+    assert!(out.stderr.contains("crashed with SIGILL: unreachable code reached in entry StartEntry"), "{}", out.stderr);
+    assert!(out.stderr.contains("  reached __builtin_unreachable() at Crash.cc:"), "{}", out.stderr);
+    assert!(!out.stdout.contains("Crash : gain"), "{}", out.stdout);
+}
+
+#[test]
 fn a_long_aligned_to_four_runs_as_on_the_robot_unless_the_build_makes_it_fatal() {
     let p = build("crash");
     // The PC's long wants 8 bytes, the robot's is a 4-byte word: no fault.

@@ -21,7 +21,7 @@
 
 namespace {
 
-// gcc's (libsanitizer's) data layout for the type-mismatch check.
+// gcc's (libsanitizer's) data layouts for the checks.
 struct SourceLocation {
     const char*  file;
     unsigned int line;
@@ -95,6 +95,23 @@ void __ubsan_handle_type_mismatch_v1_abort(const TypeMismatchData* data, unsigne
     // Never return (gcc assumed so): the signal faults the object.
     if (!check(data, pointer, false)) abort();
     for (;;) pause();
+}
+
+// -fsanitize=unreachable is in the compiler's flags so that a function that flows off its
+// end without a return returns, as with gcc 3.3. What is left for this handler: the
+// program reached a __builtin_unreachable() of its own (or of a header's).
+struct UnreachableData {
+    SourceLocation loc;
+};
+
+void __ubsan_handle_builtin_unreachable(const UnreachableData* data)
+{
+    snprintf(note, sizeof(note), "reached __builtin_unreachable() at %s:%u:%u", data->loc.file, data->loc.line,
+             data->loc.column);
+    union sigval value;
+    value.sival_ptr = note;
+    pthread_sigqueue(pthread_self(), SIGILL, value);
+    abort();
 }
 
 } // extern "C"

@@ -57,14 +57,15 @@ pub fn flush_console() {
     }
 }
 
-/// The note the alignment check (libmcoopstub's `__ubsan_handle_type_mismatch_v1`) sent
-/// with its SIGBUS (`sigqueue`: `si_value` points at the text).
+/// The note libmcoopstub's check handlers sent with their signal (`sigqueue`: `si_value`
+/// points at the text): SIGBUS from the alignment check, SIGILL from a reached
+/// `__builtin_unreachable()`.
 ///
 /// # Safety
 /// `info` is the handler's siginfo.
 pub unsafe fn fault_note_from(sig: i32, info: *const libc::siginfo_t) -> Option<*const libc::c_char> {
     // SAFETY: `info` is non-null and is the handler's siginfo (this function's contract).
-    if sig != libc::SIGBUS || info.is_null() || unsafe { (*info).si_code } != libc::SI_QUEUE {
+    if !matches!(sig, libc::SIGBUS | libc::SIGILL) || info.is_null() || unsafe { (*info).si_code } != libc::SI_QUEUE {
         return None;
     }
     // SAFETY: `info` is the handler's siginfo (checked non-null above); getpid has no preconditions.

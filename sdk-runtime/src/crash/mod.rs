@@ -166,6 +166,7 @@ extern "C" fn on_fault(sig: libc::c_int, info: *mut libc::siginfo_t, ctx: *mut c
     let overflow = sig == libc::SIGSEGV && stack.0 != 0 && addr < stack.0 + 4096 && addr + (1 << 20) > stack.0;
     let kind = match () {
         _ if overflow => "stack overflow (endless recursion or a huge local array)",
+        _ if note.is_some() && sig == libc::SIGILL => "unreachable code reached",
         _ if note.is_some() => "misaligned access",
         _ => fault_kind(sig, code, mxcsr),
     };

@@ -39,6 +39,8 @@ static const char* const faultName[] = {
     "NULL pointer write in a thread of its own",
     "print floats (no fault)",
     "long at an address aligned to 4, not 8 (no fault on the robot)",
+    "a function that falls off its end without a return (no fault on the robot)",
+    "__builtin_unreachable() reached (code written for a newer gcc)",
 };
 static const int NUM_FAULTS = sizeof(faultName) / sizeof(faultName[0]);
 
@@ -165,6 +167,27 @@ word_aligned_long()
     volatile long* p = (long*)((char*)longs + 4);
     *p = 7;
     return *p;
+}
+
+// No return statement on the path the call takes: gcc 3.3 returned whatever the
+// register held, and the caller here ignores the value. (g++ 8 and later treat
+// the end as unreachable and run into whatever code follows.)
+static int __attribute__((noinline))
+count_servos(int first, int last)
+{
+    if (first > last) return 0;
+    printf("Crash : servos %d..%d\n", first, last);
+}
+
+// gcc 4.5 and later: the program promises the end is never reached, and breaks it.
+static int __attribute__((noinline))
+servo_gain(int servo)
+{
+    switch (servo) {
+    case 0: return 10;
+    case 1: return 20;
+    }
+    __builtin_unreachable();
 }
 
 static void
@@ -349,6 +372,13 @@ Crash::CommitFault(int fault)
         break;
     case 19:
         printf("Crash : word-aligned long = %ld\n", word_aligned_long());
+        break;
+    case 20:
+        count_servos(1, 3);
+        printf("Crash : count_servos returned\n");
+        break;
+    case 21:
+        printf("Crash : gain %d\n", servo_gain(2));
         break;
     }
 }
