@@ -149,7 +149,6 @@ fn small_window_listener() -> TcpListener {
     server
 }
 
-/// What the peer reads until the end of the connection (or an error).
 /// What the peer reads until the stream ends, and how it ended: `None` for an orderly
 /// close (FIN), else the error (a reset).
 fn read_to_end(peer: &mut std::net::TcpStream) -> (Vec<u8>, Option<std::io::ErrorKind>) {

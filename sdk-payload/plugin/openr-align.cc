@@ -66,8 +66,8 @@ bool trap_on_error()
 
 // Replaces the UBSAN_NULL at `gsi` (an alignment check of `need` bytes) by
 //   t = (uintptr) ptr & (need - 1); if (t != 0) handler_abort (&data, ptr);
-// Returns the block the rest of the original block now lives in.
-basic_block lower(gimple_stmt_iterator* gsi, unsigned HOST_WIDE_INT need)
+// The rest of the original block moves to a new block after the fault block.
+void lower(gimple_stmt_iterator* gsi, unsigned HOST_WIDE_INT need)
 {
     gimple* stmt = gsi_stmt(*gsi);
     location_t loc = gimple_location(stmt);
@@ -87,9 +87,7 @@ basic_block lower(gimple_stmt_iterator* gsi, unsigned HOST_WIDE_INT need)
     // The block is split after the check: the check's block ends in the condition.
     basic_block cond_bb = gimple_bb(stmt);
     edge e = split_block(cond_bb, stmt);
-    basic_block rest = e->dest;
     e->flags = EDGE_FALSE_VALUE;
-    e->probability = profile_probability::always();
     basic_block fault_bb = create_empty_bb(cond_bb);
     edge te = make_edge(cond_bb, fault_bb, EDGE_TRUE_VALUE);
     te->probability = profile_probability::never();
@@ -122,7 +120,6 @@ basic_block lower(gimple_stmt_iterator* gsi, unsigned HOST_WIDE_INT need)
     g = gimple_build_cond(NE_EXPR, low, build_int_cst(pointer_sized_int_node, 0), NULL_TREE, NULL_TREE);
     gimple_set_location(g, loc);
     gsi_replace(gsi, g, false);
-    return rest;
 }
 
 const pass_data align_pass_data = {
@@ -170,9 +167,10 @@ struct align_pass : gimple_opt_pass {
                     gsi_remove(&gsi, true);
                     continue;
                 }
-                basic_block rest = lower(&gsi, need);
-                (void)rest;
-                break;   // the rest of this block is the next block of the walk
+                lower(&gsi, need);
+                // The block ends at the check now; the walk goes on with the fault block,
+                // then the block holding the rest.
+                break;
             }
         }
         if (changed) mark_virtual_operands_for_renaming(fun);
@@ -185,8 +183,9 @@ struct align_pass : gimple_opt_pass {
 int plugin_init(struct plugin_name_args* info, struct plugin_gcc_version* version)
 {
     if (!plugin_default_version_check(version, &gcc_version)) {
-        error("%s was built for gcc %s, not this gcc %s: reinstall the SDK root "
-              "(cargo openr sdk install)", info->base_name, gcc_version.basever, version->basever);
+        error("%s was built for another gcc (%s %s) than this one (%s %s): reinstall the SDK "
+              "root (cargo openr sdk install)", info->base_name, gcc_version.basever,
+              gcc_version.datestamp, version->basever, version->datestamp);
         return 1;
     }
     struct register_pass_info pass;

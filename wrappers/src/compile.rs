@@ -21,8 +21,10 @@ pub(crate) enum Lang {
 /// * `-fsanitize=unreachable` (C++): a function that flows off its end without a return
 ///   returns whatever the register holds, as with gcc 3.3 (and as real AIBO code relies
 ///   on); g++ 8 and later otherwise take the end for unreachable and run into the code
-///   that follows. The code stays as fast: only a `__builtin_unreachable()` the program
-///   reaches calls libmcoopstub's handler, which faults the object saying where.
+///   that follows. A `__builtin_unreachable()` the program reaches calls libmcoopstub's
+///   handler, which faults the object saying where. (With gcc 12 the code stays as
+///   fast; from gcc 13 on such a call in a header no longer tells the optimiser what
+///   it promises.)
 /// * `-fPIC`: every object, archive member included, ends up in a shared object.
 /// * `-Dasm(...)=`: MIPS inline assembly (e.g. `asm("mfc0 $2, $12")`) cannot run on the
 ///   host; glibc and libstdc++ spell theirs `__asm__`, which stays intact.

@@ -10,7 +10,7 @@
 //! <root>/OPEN_R/include/**       our OPEN-R headers
 //! <root>/OPEN_R/lib/lib*.a       the runtime's C++ surface, compiled here with host g++
 //! <root>/OPEN_R/src/**           its sources, for debuggers
-//! <root>/libexec/openr-align.so  the alignment trap's gcc plugin (align_plugin.rs)
+//! <root>/libexec/openr-align/    the alignment trap's gcc plugin, per compiler (align_plugin.rs)
 //! <root>/OPEN_R/MS_ERS7/...      Memory Stick base trees
 //! <root>/sim/mujoco/*.py,*.xml   the MuJoCo simulator peer (`cargo openr run --sim mujoco`)
 //! ```
@@ -123,14 +123,21 @@ pub fn install_telling(prefix: &Path, exe: &Path, building: impl FnOnce(Building
     result.map(|()| Outcome::Installed)
 }
 
-/// An up-to-date root, its alignment plugin rebuilt if the host compiler changed since
-/// (under the install lock, which the caller may hold already).
+/// An up-to-date root, its alignment plugin built for the host compiler if it has none
+/// yet (under the install lock, which the caller may hold already). A root that cannot
+/// be written to (installed by root, say) is used as it is: the trap then uses gcc's
+/// own check, and a warning says why.
 fn refreshed(prefix: &Path, locked: bool) -> Result<Outcome, Error> {
     if crate::align_plugin::needs_rebuild(prefix) {
         let parent = prefix.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-        let _lock = if locked { None } else { Some(lock(parent, prefix)?) };
-        if crate::align_plugin::needs_rebuild(prefix) {
-            crate::align_plugin::build(prefix)?;
+        let built = (if locked { Ok(None) } else { lock(parent, prefix).map(Some) }).and_then(|_lock| {
+            if crate::align_plugin::needs_rebuild(prefix) {
+                crate::align_plugin::build(prefix)?;
+            }
+            Ok(())
+        });
+        if let Err(e) = built {
+            eprintln!("warning: cannot build the alignment trap's gcc plugin into {}: {e} (the trap uses gcc's own, slower check)", prefix.display());
         }
     }
     Ok(Outcome::UpToDate)

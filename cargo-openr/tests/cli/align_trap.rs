@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use crate::support::{cargo_openr, sdk_root};
+use crate::support::sdk_root;
 
 fn testdata(file: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../testdata/align-trap").join(file)
@@ -112,33 +112,91 @@ fn without_the_plugin_gcc_checks_the_pc_alignment_and_its_handler_returns() {
     }
 }
 
-#[test]
-fn a_root_without_plugin_headers_says_so_and_gets_its_plugin_once_they_are_there() {
+/// A g++ that behaves as `script` says first (a shell `case` on its arguments), then is
+/// the host's g++. Each one is a compiler of its own for the root (its own identity).
+fn gxx_that(dir: &Path, name: &str, script: &str) -> PathBuf {
     use std::os::unix::fs::PermissionsExt;
+    let path = dir.join(name);
+    std::fs::write(&path, format!("#!/bin/sh\n{script}\nexec g++ \"$@\"\n")).unwrap();
+    std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o755)).unwrap();
+    path
+}
+
+/// The root's plugins and notes (`libexec/openr-align/*.so`, `*.missing` texts).
+fn plugins(root: &Path) -> (usize, Vec<String>) {
+    let mut so = 0;
+    let mut notes = Vec::new();
+    for e in std::fs::read_dir(root.join("libexec/openr-align")).unwrap().flatten() {
+        let p = e.path();
+        match p.extension().and_then(|x| x.to_str()) {
+            Some("so") => so += 1,
+            Some("missing") => notes.push(std::fs::read_to_string(&p).unwrap()),
+            _ => {}
+        }
+    }
+    notes.sort();
+    (so, notes)
+}
+
+/// `cargo openr <args>` with `OPENR_HOST_CXX=gxx`: (success, stderr).
+fn with_gxx(gxx: &Path, args: &[&str]) -> (bool, String) {
+    let out = Command::new(crate::support::exe()).args(args).env("OPENR_HOST_CXX", gxx).output().unwrap();
+    (out.status.success(), format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr)))
+}
+
+#[test]
+fn a_root_says_why_it_has_no_plugin_and_builds_it_when_it_can() {
     let dir = tempfile::tempdir().unwrap();
-    // g++ whose plugin headers are not installed.
-    let bare = dir.path().join("bare-g++");
-    std::fs::write(&bare, "#!/bin/sh\n[ \"$1\" = -print-file-name=plugin ] && { echo /nonexistent/plugin; exit 0; }\nexec g++ \"$@\"\n").unwrap();
-    std::fs::set_permissions(&bare, std::fs::Permissions::from_mode(0o755)).unwrap();
-    let root = dir.path().join("sdk");
-    let out = Command::new(crate::support::exe()).args(["sdk", "install", "--prefix"]).arg(&root).env("OPENR_HOST_CXX", &bare).output().unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    assert!(!root.join("libexec/openr-align.so").exists());
-    let note = std::fs::read_to_string(root.join("libexec/openr-align.missing")).unwrap();
-    assert!(note.contains("has no plugin headers (apt-get install gcc-"), "{note}");
+    let d = dir.path();
+    let root = d.join("sdk");
+    let root_s = root.to_str().unwrap();
+    // Headers missing at first, there once `headers-ok` exists: the same compiler.
+    let late = gxx_that(
+        d,
+        "late-g++",
+        &format!("[ \"$1\" = -print-file-name=plugin ] && [ ! -e {0}/headers-ok ] && {{ echo /nonexistent/plugin; exit 0; }}", d.display()),
+    );
+    let (ok, log) = with_gxx(&late, &["sdk", "install", "--prefix", root_s]);
+    assert!(ok, "{log}");
+    let (so, notes) = plugins(&root);
+    assert_eq!(so, 0, "{notes:?}");
+    assert!(notes.len() == 1 && notes[0].contains("has no plugin headers (apt-get install gcc-"), "{notes:?}");
     // Objects still build, on gcc's own check.
-    let exe = build(&root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[("OPENR_HOST_CXX", bare.to_str().unwrap())], dir.path(), "bare");
+    let exe = build(&root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[("OPENR_HOST_CXX", late.to_str().unwrap())], d, "late1");
     assert!(case(&exe, 1).1.starts_with("went on after 'volatile int'"));
-    let out = Command::new(crate::support::exe()).args(["doctor", "--format", "json", "--sdk"]).arg(&root).env("OPENR_HOST_CXX", &bare).output().unwrap();
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let (_, json) = with_gxx(&late, &["doctor", "--format", "json", "--sdk", root_s]);
+    let v: serde_json::Value = serde_json::from_str(json.lines().next().unwrap_or_default()).unwrap_or_else(|e| panic!("{e}: {json}"));
     let f = v["findings"].as_array().unwrap().iter().find(|f| f["name"] == "alignment trap plugin").cloned().unwrap_or_default();
     assert_eq!(f["ok"], false, "{v}");
     assert!(f["detail"].as_str().unwrap_or_default().contains("has no plugin headers"), "{f}");
     assert!(f["fix"].as_str().unwrap_or_default().starts_with("apt-get install gcc-"), "{f}");
-    // With the headers there (the plain g++), the next use of the root builds it.
-    let out = cargo_openr(&["sdk", "install", "--prefix", root.to_str().unwrap()]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    assert!(root.join("libexec/openr-align.so").is_file() && !root.join("libexec/openr-align.missing").exists());
-    let exe = build(&root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[], dir.path(), "rebuilt");
+    // The headers are there now: the next use of the root builds the plugin.
+    std::fs::write(d.join("headers-ok"), "").unwrap();
+    let (ok, log) = with_gxx(&late, &["sdk", "install", "--prefix", root_s]);
+    assert!(ok, "{log}");
+    let exe = build(&root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[("OPENR_HOST_CXX", late.to_str().unwrap())], d, "late2");
+    assert_stops(&exe, 1, "'volatile int' at 2 mod 8");
+
+    // A plugin that does not build: said once, not tried again at every use.
+    let log_file = d.join("shared.log");
+    let broken =
+        gxx_that(d, "broken-g++", &format!("case \" $* \" in *\" -shared \"*) echo x >> {}; echo 'error: simulated' >&2; exit 1;; esac", log_file.display()));
+    for _ in 0..2 {
+        let (ok, log) = with_gxx(&broken, &["sdk", "install", "--prefix", root_s]);
+        assert!(ok, "{log}");
+        assert!(!log.contains("warning") && !log.contains("error"), "a root without the plugin is not an error: {log}");
+    }
+    assert_eq!(std::fs::read_to_string(&log_file).unwrap(), "x\n", "built once");
+    // One that builds but does not load: the compiler is tried with it before it is kept.
+    let refusing = gxx_that(d, "refusing-g++", "case \"$*\" in *-fplugin=*) echo 'cc1plus: error: cannot load plugin' >&2; exit 1;; esac");
+    let (ok, log) = with_gxx(&refusing, &["sdk", "install", "--prefix", root_s]);
+    assert!(ok, "{log}");
+    let exe = build(&root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[("OPENR_HOST_CXX", refusing.to_str().unwrap())], d, "refusing");
+    assert!(case(&exe, 1).1.starts_with("went on after 'volatile int'"));
+    let (_, notes) = plugins(&root);
+    assert!(notes.iter().any(|n| n.contains("the alignment plugin does not build with") && n.contains("broken-g++")), "{notes:?}");
+    assert!(notes.iter().any(|n| n.contains("refusing-g++ does not load the alignment plugin: cc1plus: error: cannot load plugin")), "{notes:?}");
+    // Each compiler keeps its own: the working one still has its plugin.
+    let exe = build(&root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[("OPENR_HOST_CXX", late.to_str().unwrap())], d, "late3");
     assert_stops(&exe, 1, "'volatile int' at 2 mod 8");
 }

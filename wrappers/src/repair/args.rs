@@ -109,7 +109,8 @@ pub(crate) fn preprocess(args: &[OsString], unit_index: usize, out: &Path) -> Ve
 /// A diagnostic round on the shadow unit: syntax only, machine-readable diagnostics.
 pub(crate) fn round(args: &[OsString], unit_index: usize, shadow_unit: &Path) -> Vec<OsString> {
     let mut v = quote_dir(args, unit_index);
-    v.extend(without_outputs(args, unit_index, shadow_unit));
+    // `-w` (or the warning's own -Wno-) would hide where `template` is missing (rules.rs).
+    v.extend(without_outputs(args, unit_index, shadow_unit).into_iter().filter(|a| a != "-w" && a != "-Wno-missing-template-keyword"));
     v.extend(
         [
             "-fsyntax-only",

@@ -42,6 +42,7 @@ pub(crate) fn errors(stderr: &str) -> Vec<Diag> {
         Nothing,
     }
     let mut out: Vec<Diag> = Vec::new();
+    let mut leads: Vec<usize> = Vec::new();
     let mut to = To::Nothing;
     for line in stderr.lines() {
         if let Some(rest) = line.strip_prefix("fix-it:") {
@@ -57,13 +58,14 @@ pub(crate) fn errors(stderr: &str) -> Vec<Diag> {
         let diag = Diag { loc, msg: msg.to_string(), fixits: Vec::new(), notes: Vec::new() };
         // The warning at a dependent member template without `template` is where the
         // parse went wrong: it leads the errors that follow it.
-        let leads = level == "warning" && msg.replace(['\u{2018}', '\u{2019}'], "'").starts_with(super::rules::MISSING_TEMPLATE_KEYWORD);
+        let lead = level == "warning" && msg.replace(['\u{2018}', '\u{2019}'], "'").starts_with(super::rules::MISSING_TEMPLATE_KEYWORD);
         to = match (level, out.last_mut()) {
             ("error" | "fatal error", _) => {
                 out.push(diag);
                 To::Error
             }
-            _ if leads => {
+            _ if lead => {
+                leads.push(out.len());
                 out.push(diag);
                 To::Error
             }
@@ -74,6 +76,12 @@ pub(crate) fn errors(stderr: &str) -> Vec<Diag> {
             _ => To::Nothing,
         };
     }
+    // Only where the parse then failed on that line: g++ also warns at code it accepts
+    // (`a.b < c > (d)` read as comparisons).
+    let followed = |i: usize| out.get(i + 1).is_some_and(|n| !leads.contains(&(i + 1)) && n.loc.file == out[i].loc.file && n.loc.line == out[i].loc.line);
+    let keep: Vec<bool> = (0..out.len()).map(|i| !leads.contains(&i) || followed(i)).collect();
+    let mut keep = keep.into_iter();
+    out.retain(|_| keep.next().unwrap_or(true));
     out
 }
 
@@ -187,5 +195,16 @@ mod tests {
         assert_eq!(e[2].loc.file, "dir:with:colons/a.h");
         assert_eq!(quoted_names(&e[0].msg), vec!["typename", "B<T>::v"]);
         assert_eq!(quoted(r#""a\"b\\c\101" rest"#), Some(("a\"b\\cA".to_string(), " rest")));
+    }
+
+    #[test]
+    fn a_missing_template_warning_leads_only_where_the_parse_then_failed() {
+        let w = "warning: expected \u{2018}template\u{2019} keyword before dependent template name [-Wmissing-template-keyword]";
+        let err = format!(
+            "t.cc:2:41: {w}\nt.cc:2:45: error: expected primary-expression before \u{2018}int\u{2019}\n\
+             t.cc:7:10: {w}\nt.cc:9:3: error: \u{2018}x\u{2019} was not declared in this scope\nt.cc:12:4: {w}\n"
+        );
+        let lines: Vec<(usize, usize)> = errors(&err).iter().map(|d| (d.loc.line, d.loc.col)).collect();
+        assert_eq!(lines, [(2, 41), (2, 45), (9, 3)], "the warnings of lines 7 and 12 led to no error there");
     }
 }

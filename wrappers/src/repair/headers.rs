@@ -183,6 +183,12 @@ const TABLE: &[(&str, &[&str])] = &[
 /// The SDK's header of the robot's C library (`sdk-payload/include/openr_newlib.h`).
 pub(crate) const NEWLIB: &str = "openr_newlib.h";
 
+/// Whether `name` of [`TABLE`] is a function (a macro, a constant, `errno` and the
+/// standard streams are not): it is only taken for libc's where it is called.
+pub(crate) fn is_function(name: &str) -> bool {
+    !(name.bytes().all(|b| b.is_ascii_uppercase() || b.is_ascii_digit() || b == b'_') || matches!(name, "errno" | "stdin" | "stdout" | "stderr"))
+}
+
 /// The C header declaring `name`, if it is one of [`TABLE`]'s.
 fn header_of(name: &str) -> Option<&'static str> {
     TABLE.iter().find(|(_, names)| names.contains(&name)).map(|(h, _)| *h)

@@ -68,13 +68,13 @@ pub(crate) fn attempt(exe: &Path, host: &[&str], args: &[OsString], first: &str)
         if log {
             eprintln!("[cargo-openr] repair round in {}:\n{stderr}", dir.0.display());
         }
-        let errors = diag::errors(&stderr);
-        let included = include_first(&errors, &shadow, &mut first_includes, &mut notes);
+        let had = first_includes.len();
+        let edits = choose(&diag::errors(&stderr), &shadow, &moves, &mut notes, &mut first_includes, log);
+        let included = first_includes.len() > had;
         if included {
             let text: String = first_includes.iter().map(|h| include_line(h)).collect();
             std::fs::write(&first_h, text).ok()?;
         }
-        let edits = choose(&errors, &shadow, &moves, &mut notes, log);
         if edits.is_empty() && !included {
             return None;
         }
@@ -99,25 +99,28 @@ fn with_first(first: Option<&Path>, args: Vec<OsString>) -> Vec<OsString> {
     first.into_iter().flat_map(|f| [OsString::from("-include"), f.as_os_str().to_owned()]).chain(args).collect()
 }
 
-/// Adds to `first` the C header of each C library name used undeclared in a user file
-/// (`headers`); whether one was added.
-fn include_first(errors: &[diag::Diag], shadow: &Shadow, first: &mut Vec<String>, notes: &mut Notes) -> bool {
-    let mut added = false;
-    for d in errors {
-        let Some((name, header)) = headers::missing(&d.msg) else { continue };
-        let Some(file) = shadow.find(&d.loc.file) else { continue };
-        if first.contains(&header) {
-            continue;
-        }
-        let text = format!(
-            "{}: note: [cargo-openr] repaired `{name}` used without its header (gcc 3.3's C++ headers included the C library's on the way; gcc 4.3 stopped): compiled with `#include <{header}>` first, in a private copy (your file is unchanged)",
-            d.loc
-        );
-        notes.0.push((file, d.loc.line, d.loc.col, text));
-        first.push(header);
-        added = true;
+/// The C header to include first for error `d` (`headers`): a C library name used
+/// undeclared in a user file -- a function only where it is called, so that a variable
+/// of the unit's own called `index` or `time` is never taken for libc's. Notes it.
+fn header_first(d: &diag::Diag, shadow: &Shadow, notes: &mut Notes) -> Option<String> {
+    let (name, header) = headers::missing(&d.msg)?;
+    let file = shadow.find(&d.loc.file)?;
+    let src = &shadow.files[file].src;
+    let at = src.offset(d.loc.line, d.loc.col)?;
+    let bare = name.trim_start_matches("std::");
+    if src.ident_at(at) != bare {
+        return None;
     }
-    added
+    let called = src.code.get(at + bare.len()..).and_then(|rest| rest.iter().find(|b| !b.is_ascii_whitespace())) == Some(&b'(');
+    if headers::is_function(bare) && !called {
+        return None;
+    }
+    let text = format!(
+        "{}: note: [cargo-openr] repaired `{name}` used without its header (gcc 3.3's C++ headers included the C library's on the way; gcc 4.3 stopped): compiled with `#include <{header}>` first, in a private copy (your file is unchanged)",
+        d.loc
+    );
+    notes.0.push((file, d.loc.line, d.loc.col, text));
+    Some(header)
 }
 
 /// The shadow copies of the unit's user files, from the include tree of a preprocessing run.
@@ -146,7 +149,9 @@ struct Notes(Vec<(usize, usize, usize, String)>);
 /// The edits of one round. Errors after one we do not know may be its consequences, and
 /// so may later errors on a line just repaired: those g++ names as a legacy class are
 /// repaired, the others wait for the next round.
-fn choose(errors: &[diag::Diag], shadow: &Shadow, moves: &Moves, notes: &mut Notes, log: bool) -> Vec<Edit> {
+/// A C library name used without its header, that no rule repairs, is compiled with the
+/// header included first (added to `first`), under the same condition.
+fn choose(errors: &[diag::Diag], shadow: &Shadow, moves: &Moves, notes: &mut Notes, first: &mut Vec<String>, log: bool) -> Vec<Edit> {
     let mut edits: Vec<Edit> = Vec::new();
     let mut lines = HashSet::new();
     let mut clean = true;
@@ -157,6 +162,15 @@ fn choose(errors: &[diag::Diag], shadow: &Shadow, moves: &Moves, notes: &mut Not
             _ => None,
         };
         let Some(r) = r else {
+            if clean && !lines.contains(&(d.loc.file.clone(), d.loc.line)) {
+                if headers::missing(&d.msg).is_some_and(|(_, h)| first.contains(&h)) {
+                    continue; // its header is included already
+                }
+                if let Some(h) = header_first(d, shadow, notes) {
+                    first.push(h);
+                    continue;
+                }
+            }
             clean = false;
             continue;
         };

@@ -387,8 +387,6 @@ fn dependent_base_name(src: &Source, file: usize, at: usize, name: &str) -> Opti
     Some(Repair { class: Class::DependentBase, how, edits: vec![Edit { file, from, to, text }] })
 }
 
-/// The start of the qualified name (`RingTraits<T>::const_reference`) whose last
-/// component starts at `at`.
 /// `template A<int>;` (the `;` at `at`): the statement is `template`, a class template's
 /// name and its arguments, nothing else. `class` goes after `template`.
 fn classless_instantiation(src: &Source, file: usize, at: usize) -> Option<Repair> {
@@ -417,6 +415,8 @@ fn classless_instantiation(src: &Source, file: usize, at: usize) -> Option<Repai
     })
 }
 
+/// The start of the qualified name (`RingTraits<T>::const_reference`) whose last
+/// component starts at `at`.
 fn qualified_start(src: &Source, at: usize) -> usize {
     let code = &src.code;
     let mut start = at;

@@ -151,7 +151,8 @@ impl Shadow {
             text = text.replace(&*f.path.to_string_lossy(), &f.name);
         }
         // A private header (gone after the compile) is no prerequisite, nor a -MP target.
-        if let Some(p) = private.map(|p| p.to_string_lossy().into_owned()) {
+        // (make escapes a space in a name as `\ `.)
+        if let Some(p) = private.map(|p| p.to_string_lossy().replace(' ', "\\ ")) {
             text = text.replace(&format!(" {p}"), "").lines().filter(|l| !l.starts_with(&format!("{p}:"))).map(|l| format!("{l}\n")).collect();
         }
         let _ = std::fs::write(depfile, text);

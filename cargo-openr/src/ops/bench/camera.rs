@@ -125,7 +125,17 @@ pub fn camera(exe: &Path, root: &Path, p: &Programs, tab: &mut Table) -> Result<
     };
     let (with, per_image) = sweep(p.camsweep)?;
     const NO_CAMERA: &str = "headsweep alone at --speed max (60 s, start-up taken off, no camera)";
-    tab.push("camsweep: camera program, head sweeping (headsweep + camwatch) at --speed max, 60 s, start-up taken off", SWEEP_S / with, "×", Some(NO_CAMERA));
+    // Without the plugin this row and the gcc's-own-check row measure the same build.
+    let trap = match openr_wrappers::align_plugin::status(root) {
+        Ok(_) => "the alignment trap by the SDK's gcc plugin".to_string(),
+        Err(why) => format!("the alignment trap by gcc's own check: the SDK root has no plugin ({why})"),
+    };
+    tab.push(
+        &format!("camsweep: camera program, head sweeping (headsweep + camwatch, {trap}) at --speed max, 60 s, start-up taken off"),
+        SWEEP_S / with,
+        "×",
+        Some(NO_CAMERA),
+    );
     tab.push(NO_CAMERA, SWEEP_S / without, "×", None);
     tab.push("host time per camera image, head sweeping ((camsweep − headsweep alone) / images read)", per_image, "ms", None);
     // The same with camwatch reading no pixel: what is left is the runtime's share of an
