@@ -64,21 +64,74 @@ bool trap_on_error()
 #endif
 }
 
-// Replaces the UBSAN_NULL at `gsi` (an alignment check of `need` bytes) by
-//   t = (uintptr) ptr & (need - 1); if (t != 0) handler_abort (&data, ptr);
+// What one check tests: the address `ptr + offset` against `need` bytes; the handler is
+// told `type` (an access of it) and the PC's alignment `host`.
+struct Check {
+    tree type;
+    unsigned HOST_WIDE_INT host;
+    unsigned HOST_WIDE_INT need;
+    HOST_WIDE_INT offset;
+};
+
+// gcc checks a member access `p->d` against the whole object's type. If the statement
+// the check guards (the next one) loads or stores a double member at a constant place,
+// the robot's ldc1/sdc1 want that double 8-byte aligned: the check becomes one of the
+// double's own address. Otherwise null.
+tree double_at(tree ref, tree ptr, HOST_WIDE_INT* offset);
+
+tree guarded_double(gimple_stmt_iterator gsi, tree ptr, HOST_WIDE_INT* offset)
+{
+    gsi_next_nondebug(&gsi);
+    if (gsi_end_p(gsi) || !is_gimple_assign(gsi_stmt(gsi))) return NULL_TREE;
+    gimple* s = gsi_stmt(gsi);
+    // A load or a store (the kind of a C++ member access does not say which).
+    tree d = double_at(gimple_assign_lhs(s), ptr, offset);
+    return d ? d : double_at(gimple_assign_rhs1(s), ptr, offset);
+}
+
+// The type of `ref` if it is a double at a constant place in `*ptr` (its offset in
+// `offset`), else null.
+tree double_at(tree ref, tree ptr, HOST_WIDE_INT* offset)
+{
+    tree type = TREE_TYPE(ref);
+    if (TREE_CODE(type) != REAL_TYPE || TYPE_PRECISION(type) != 64 || !handled_component_p(ref)) return NULL_TREE;
+    poly_int64 bitsize, bitpos;
+    tree varying;
+    machine_mode mode;
+    int unsignedp, reversep, volatilep;
+    tree base = get_inner_reference(ref, &bitsize, &bitpos, &varying, &mode, &unsignedp, &reversep, &volatilep);
+    HOST_WIDE_INT bits;
+    if (varying || TREE_CODE(base) != MEM_REF || TREE_OPERAND(base, 0) != ptr || !bitpos.is_constant(&bits) || bits % BITS_PER_UNIT)
+        return NULL_TREE;
+    poly_int64 extra;
+    HOST_WIDE_INT more;
+    if (!mem_ref_offset(base).to_shwi(&extra) || !extra.is_constant(&more)) return NULL_TREE;
+    *offset = bits / BITS_PER_UNIT + more;
+    return type;
+}
+
+// Replaces the UBSAN_NULL at `gsi` by
+//   a = (uintptr) ptr + offset; if ((a & (need - 1)) != 0) handler_abort (&data, a);
 // The rest of the original block moves to a new block after the fault block.
-void lower(gimple_stmt_iterator* gsi, unsigned HOST_WIDE_INT need)
+void lower(gimple_stmt_iterator* gsi, const Check& c)
 {
     gimple* stmt = gsi_stmt(*gsi);
     location_t loc = gimple_location(stmt);
     tree ptr = gimple_call_arg(stmt, 0);
     tree ckind = gimple_call_arg(stmt, 1);
-    tree align = gimple_call_arg(stmt, 2);
+    unsigned HOST_WIDE_INT need = c.need;
 
     tree addr = make_ssa_name(pointer_sized_int_node);
     gimple* g = gimple_build_assign(addr, NOP_EXPR, ptr);
     gimple_set_location(g, loc);
     gsi_insert_before(gsi, g, GSI_SAME_STMT);
+    if (c.offset != 0) {
+        tree base = addr;
+        addr = make_ssa_name(pointer_sized_int_node);
+        g = gimple_build_assign(addr, PLUS_EXPR, base, build_int_cst(pointer_sized_int_node, c.offset));
+        gimple_set_location(g, loc);
+        gsi_insert_before(gsi, g, GSI_SAME_STMT);
+    }
     tree low = make_ssa_name(pointer_sized_int_node);
     g = gimple_build_assign(low, BIT_AND_EXPR, addr, build_int_cst(pointer_sized_int_node, need - 1));
     gimple_set_location(g, loc);
@@ -104,8 +157,8 @@ void lower(gimple_stmt_iterator* gsi, unsigned HOST_WIDE_INT need)
     // The handler call: gcc's data for it (source position, the type, the PC's
     // alignment, what kind of access), as gcc's own expansion makes it.
     tree data = ubsan_create_data("__ubsan_null_data", 1, &loc,
-                                  ubsan_type_descriptor(TREE_TYPE(ckind), UBSAN_PRINT_POINTER), NULL_TREE,
-                                  build_int_cst(unsigned_char_type_node, MAX(tree_log2(align), 0)),
+                                  ubsan_type_descriptor(build_pointer_type(c.type), UBSAN_PRINT_POINTER), NULL_TREE,
+                                  build_int_cst(unsigned_char_type_node, exact_log2(c.host)),
                                   fold_convert(unsigned_char_type_node, ckind), NULL_TREE);
     data = build_fold_addr_expr_loc(loc, data);
     if (trap_on_error())
@@ -158,16 +211,24 @@ struct align_pass : gimple_opt_pass {
                     continue;
                 }
                 tree ptr = gimple_call_arg(stmt, 0);
-                tree type = TREE_TYPE(TREE_TYPE(gimple_call_arg(stmt, 1)));
+                tree ckind = gimple_call_arg(stmt, 1);
+                tree type = TREE_TYPE(TREE_TYPE(ckind));
                 unsigned HOST_WIDE_INT host = tree_to_uhwi(gimple_call_arg(stmt, 2));
-                unsigned HOST_WIDE_INT need = recover ? robot_alignment(type, host) : host;
+                Check c = {type, host, recover ? robot_alignment(type, host) : host, 0};
+                unsigned HOST_WIDE_INT kind = tree_to_uhwi(ckind);
+                bool access = kind == UBSAN_LOAD_OF || kind == UBSAN_STORE_OF || kind == UBSAN_MEMBER_ACCESS;
+                if (recover && AGGREGATE_TYPE_P(type) && access) {
+                    HOST_WIDE_INT offset;
+                    if (tree d = guarded_double(gsi, ptr, &offset)) c = {d, 8, 8, offset};
+                }
                 changed = true;
-                if (need <= 1 || get_pointer_alignment(ptr) / BITS_PER_UNIT >= need) {
+                bool aligned = c.offset % (HOST_WIDE_INT)c.need == 0 && get_pointer_alignment(ptr) / BITS_PER_UNIT >= c.need;
+                if (c.need <= 1 || aligned) {
                     unlink_stmt_vdef(stmt);
                     gsi_remove(&gsi, true);
                     continue;
                 }
-                lower(&gsi, need);
+                lower(&gsi, c);
                 // The block ends at the check now; the walk goes on with the fault block,
                 // then the block holding the rest.
                 break;

@@ -1,4 +1,5 @@
-/* cases.c - the alignment trap in C (mipsel-linux-gcc): an int at 2 stops, a long at 4 goes. */
+/* cases.c - the alignment trap in C (mipsel-linux-gcc): an int at 2 stops, a long at 4 goes,
+ * a struct's double member at 4 stops. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -24,6 +25,8 @@ void __ubsan_handle_type_mismatch_v1(void* data, void* p)
     printf("went on after %s at %lu mod 8\n", d->type->name, (unsigned long)p % 8);
 }
 
+struct Pose { int frame; double pan; };
+
 static double store[8];
 
 int main(int argc, char** argv)
@@ -32,6 +35,7 @@ int main(int argc, char** argv)
     char* base = (char*)store;
     if (n == 1) *(volatile int*)(base + 2) = 1;
     if (n == 5) *(volatile long*)(base + 4) = 1;
+    if (n == 11) ((struct Pose*)(base + 4))->pan = 1;
     printf("case %d went through\n", n);
     return 0;
 }

@@ -42,6 +42,11 @@ struct Pair {
     int  b;
 };
 
+struct Pose {
+    int    frame;
+    double pan;
+};
+
 struct Counter {
     unsigned long sum;
     void add(const unsigned char* p, int n)
@@ -68,6 +73,8 @@ int main(int argc, char** argv)
     case 7: *(volatile long long*)at(4) = 1; break;       // robot: two words, fine
     case 8: *(void* volatile*)at(4) = 0; break;           // robot: a 4-byte pointer, fine
     case 9: ((Pair*)at(4))->b = 1; break;                 // robot: a struct of words at 4, fine
+    case 11: ((Pose*)at(4))->pan = 1; break;               // robot: sdc1 at 12, address error
+    case 12: ((Pose*)at(4))->frame = 1; break;             // robot: sw at 4, fine
     case 10: {                                            // a loop through a member at 4
         unsigned char pixels[64];
         memset(pixels, 1, sizeof(pixels));

@@ -59,6 +59,10 @@ fn the_plugin_stops_exactly_what_the_robot_would_and_never_returns() {
     assert_stops(&exe, 3, "'volatile float' at 2 mod 8");
     assert_stops(&exe, 4, "'volatile double' at 4 mod 8");
     assert_stops(&exe, 6, "'volatile long int' at 2 mod 8");
+    // gcc checks `p->pan` against the struct (4 on the robot); the robot's sdc1 wants
+    // the double itself 8-byte aligned, its int neighbour 4.
+    assert_stops(&exe, 11, "'double' at 4 mod 8");
+    assert_goes(&exe, 12);
     // Words of the robot at a 4-byte address: a long, a long long, a pointer, a struct
     // of words, a member summed in a loop. The handler is not even called.
     for n in [5, 7, 8, 9, 10] {
@@ -74,6 +78,7 @@ fn the_plugin_stops_exactly_what_the_robot_would_and_never_returns() {
     assert_stops(&c, 1, "'volatile int' at 2 mod 8");
     let (code, out) = case(&c, 5);
     assert_eq!((code, out.as_str()), (Some(0), "case 5 went through\n"));
+    assert_stops(&c, 11, "'double' at 4 mod 8");
 }
 
 #[test]

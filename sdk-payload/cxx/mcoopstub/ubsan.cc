@@ -12,7 +12,8 @@
 //
 // With the SDK root's gcc plugin (sdk-payload/plugin/openr-align.cc, the usual case) the
 // code checks the robot's alignment itself and calls only the _abort handler, only for an
-// access the robot would refuse (or, under -fno-sanitize-recover, the PC's type would).
+// access the robot would refuse (or, under -fno-sanitize-recover, the PC's type would);
+// for `p->d` it names the double member, where gcc's own check names the whole struct.
 #include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
