@@ -1,4 +1,5 @@
-// openr-align.cc - a gcc plugin that makes the alignment trap cheap.
+// openr-align.cc - the SDK's gcc plugin: a cheap alignment trap, and MIPS inline
+// assembly left out (at the end of this file).
 //
 // mipsel-linux-g++ builds with -fsanitize=alignment: the robot's MIPS CPU faults on a
 // misaligned load or store, x86 does not.  gcc puts an internal check (UBSAN_NULL) at
@@ -190,9 +191,13 @@ const pass_data align_pass_data = {
 struct align_pass : gimple_opt_pass {
     align_pass(gcc::context* ctx) : gimple_opt_pass(align_pass_data, ctx) {}
 
+    // OPENR_ALIGNMENT_TRAP=ubsan asks for gcc's own check (the plugin is loaded for its
+    // other pass all the same).
     bool gate(function*) final override
     {
-        return (flag_sanitize & SANITIZE_ALIGNMENT) && !(flag_sanitize & SANITIZE_NULL);
+        const char* trap = getenv("OPENR_ALIGNMENT_TRAP");
+        bool own = trap && strcmp(trap, "ubsan") == 0;
+        return (flag_sanitize & SANITIZE_ALIGNMENT) && !(flag_sanitize & SANITIZE_NULL) && !own;
     }
 
     unsigned int execute(function* fun) final override
@@ -239,6 +244,58 @@ struct align_pass : gimple_opt_pass {
     }
 };
 
+// MIPS inline assembly of the program's own code (`asm volatile ("mfc0 %0, $9" : "=r"
+// (count))`, `__asm__ __volatile__ ("sync")`): the PC cannot run it, and the compiler
+// wrapper's -Dasm(...)= only reaches a plain `asm (`. Each asm statement outside the
+// system's headers is left out; its outputs become 0, and a note says so.
+const pass_data asm_pass_data = {
+    GIMPLE_PASS,
+    "openr-mips-asm",
+    OPTGROUP_NONE,
+    TV_NONE,
+    PROP_ssa | PROP_cfg,
+    0,
+    0,
+    0,
+    TODO_update_ssa_only_virtuals,
+};
+
+struct asm_pass : gimple_opt_pass {
+    asm_pass(gcc::context* ctx) : gimple_opt_pass(asm_pass_data, ctx) {}
+
+    unsigned int execute(function* fun) final override
+    {
+        bool changed = false;
+        basic_block bb;
+        FOR_EACH_BB_FN(bb, fun)
+        {
+            for (gimple_stmt_iterator gsi = gsi_start_bb(bb); !gsi_end_p(gsi);) {
+                gasm* stmt = dyn_cast<gasm*>(gsi_stmt(gsi));
+                location_t loc = stmt ? gimple_location(stmt) : UNKNOWN_LOCATION;
+                // asm goto jumps: its edges stay, and so does it (the assembler names it).
+                if (!stmt || gimple_asm_nlabels(stmt) > 0 || loc == UNKNOWN_LOCATION || in_system_header_at(loc)) {
+                    gsi_next(&gsi);
+                    continue;
+                }
+                unsigned outputs = gimple_asm_noutputs(stmt);
+                for (unsigned i = 0; i < outputs; i++) {
+                    tree out = TREE_VALUE(gimple_asm_output_op(stmt, i));
+                    gimple* zero = gimple_build_assign(out, build_zero_cst(TREE_TYPE(out)));
+                    gimple_set_location(zero, loc);
+                    gsi_insert_before(&gsi, zero, GSI_SAME_STMT);
+                }
+                inform(loc, "%s MIPS inline assembly left out: the PC cannot run it%s", "[cargo-openr]",
+                       outputs ? "; its outputs are 0" : "");
+                unlink_stmt_vdef(stmt);
+                gsi_remove(&gsi, true);
+                changed = true;
+            }
+        }
+        if (changed) mark_virtual_operands_for_renaming(fun);
+        return 0;
+    }
+};
+
 } // namespace
 
 int plugin_init(struct plugin_name_args* info, struct plugin_gcc_version* version)
@@ -255,7 +312,13 @@ int plugin_init(struct plugin_name_args* info, struct plugin_gcc_version* versio
     pass.ref_pass_instance_number = 1;
     pass.pos_op = PASS_POS_INSERT_AFTER;
     register_callback(info->base_name, PLUGIN_PASS_MANAGER_SETUP, NULL, &pass);
-    static struct plugin_info about = {"1", "the robot's alignment trap, checked as the robot does"};
+    struct register_pass_info mips;
+    mips.pass = new asm_pass(g);
+    mips.reference_pass_name = "ubsan";
+    mips.ref_pass_instance_number = 1;
+    mips.pos_op = PASS_POS_INSERT_AFTER;
+    register_callback(info->base_name, PLUGIN_PASS_MANAGER_SETUP, NULL, &mips);
+    static struct plugin_info about = {"2", "the robot's alignment trap, checked as the robot does; MIPS inline assembly left out"};
     register_callback(info->base_name, PLUGIN_INFO, NULL, &about);
     return 0;
 }

@@ -1,8 +1,10 @@
-//! The alignment trap's gcc plugin (`sdk-payload/plugin/openr-align.cc`): built into
-//! the SDK root with the host compiler, passed to that compiler by `mipsel-linux-g++` /
-//! `gcc`. It checks each access against the robot's alignment with a handler that never
-//! returns, so the optimisers work as without the trap (gcc's own recoverable check
-//! counts as a store to all memory: a loop adding to a member reloads it every pass).
+//! The SDK's gcc plugin (`sdk-payload/plugin/openr-align.cc`): built into the SDK root
+//! with the host compiler, passed to that compiler by `mipsel-linux-g++` / `gcc`. It
+//! checks each access against the robot's alignment with a handler that never returns,
+//! so the optimisers work as without the trap (gcc's own recoverable check counts as a
+//! store to all memory: a loop adding to a member reloads it every pass), and it leaves
+//! out the program's MIPS inline assembly (`asm volatile`, `__asm__`), which the
+//! wrapper's `-Dasm(...)=` cannot reach.
 //!
 //! A plugin only loads into the very gcc it was built for. Each build is kept for the
 //! compiler binary it was made and tried with, by that binary's identity (path, size,
@@ -27,7 +29,7 @@ pub const SOURCE_DIR: &str = "OPEN_R/src/gcc-plugin";
 const SOURCE: &str = "OPEN_R/src/gcc-plugin/openr-align.cc";
 
 /// `OPENR_ALIGNMENT_TRAP`: `0` leaves the trap out, `ubsan` uses gcc's own recoverable
-/// check without the plugin; anything else (or unset) the plugin where there is one.
+/// check (the plugin reads it too); anything else (or unset) the plugin's.
 pub const VAR: &str = "OPENR_ALIGNMENT_TRAP";
 
 const NO_HEADERS: &str = "has no plugin headers";
@@ -59,11 +61,8 @@ fn plugin_for(root: &Path, compiler: &Path) -> Option<PathBuf> {
 }
 
 /// The `-fplugin=` flag for a compile by `compiler` against the SDK root `root`, if the
-/// root has a plugin built for that compiler and the build wants it.
+/// root has a plugin built for that compiler.
 pub fn flag(root: &Path, compiler: &Path) -> Option<String> {
-    if std::env::var_os(VAR).is_some_and(|v| v == "0" || v == "ubsan") {
-        return None;
-    }
     plugin_for(root, compiler).map(|so| format!("-fplugin={}", so.display()))
 }
 

@@ -33,7 +33,8 @@ pub(crate) enum Lang {
 ///   x86 does not; the check calls libmcoopstub's handler, which faults the object when
 ///   the robot would have (`OPENR_ALIGNMENT_TRAP=0`, or `-fno-sanitize=alignment` in the
 ///   user's flags, turns it off). The compile itself also loads the SDK root's gcc
-///   plugin ([`crate::align_plugin`]), which makes the check the robot's and cheap.
+///   plugin ([`crate::align_plugin`]), which makes the check the robot's and cheap, and
+///   leaves out MIPS inline assembly that `-Dasm(...)=` cannot reach (`asm volatile`).
 pub(crate) fn host_flags(lang: Lang, user: &[OsString]) -> Vec<&'static str> {
     let has_std = user.iter().any(|a| a.to_string_lossy().starts_with("-std="));
     let mut flags = Vec::new();
@@ -102,12 +103,9 @@ pub(crate) fn run(lang: Lang, args: Vec<OsString>) -> Result<i32, Error> {
     Ok(out.status.code().unwrap_or(1))
 }
 
-/// `-fplugin=` for the alignment trap when the compile wants the trap and this tool's
-/// SDK root has the plugin built for `compiler`.
+/// `-fplugin=` for the SDK's gcc plugin when this tool's SDK root has one built for
+/// `compiler`.
 fn plugin_flag(compiler: &std::path::Path) -> Option<String> {
-    if !crate::align_plugin::trap_wanted() {
-        return None;
-    }
     let root = crate::root::root_from_exe(&std::env::current_exe().ok()?)?;
     crate::align_plugin::flag(&root, compiler)
 }

@@ -10,6 +10,16 @@ pub fn notes(stderr: &str, cwd: &Path) -> Vec<String> {
     let mut sources = Sources { cwd, files: HashMap::new() };
     let mut out: Vec<String> = Vec::new();
     for line in stderr.lines() {
+        // The assembler's: MIPS inline assembly the SDK's gcc plugin did not leave out.
+        if let Some((loc, msg)) = line.split_once(": Error: ").filter(|(_, m)| m.starts_with("no such instruction")) {
+            let text = format!(
+                "{loc}: note: [cargo-openr] {msg}: MIPS inline assembly the PC cannot run; the SDK's gcc plugin leaves it out, but this root has none for this compiler (`cargo openr doctor` says why); or put it under `#ifdef __mips__`"
+            );
+            if !out.contains(&text) {
+                out.push(text);
+            }
+            continue;
+        }
         let Some((loc, msg)) = line.split_once(": error: ") else { continue };
         let note = if msg.contains("need \u{2018}typename\u{2019} before") || msg.contains("need 'typename' before") {
             Some("gcc 3.3 accepted a dependent type without `typename` (implicit typename, removed in gcc 3.4); g++ 12 cannot: add `typename` before it (repaired automatically once the unit's other errors are fixed)".to_string())

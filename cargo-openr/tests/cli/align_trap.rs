@@ -97,6 +97,27 @@ fn the_flags_that_make_the_check_fatal_are_honoured_with_the_plugin_too() {
 }
 
 #[test]
+fn without_the_plugin_mips_assembly_fails_with_a_note_that_says_why() {
+    let dir = tempfile::tempdir().unwrap();
+    let unit = dir.path().join("cycles.cc");
+    std::fs::write(&unit, "unsigned f()\n{\n    unsigned c;\n    __asm__ __volatile__(\"mfc0 %0, $9\" : \"=r\"(c));\n    return c;\n}\n").unwrap();
+    let other = other_gxx(dir.path());
+    let out = Command::new(sdk_root().join("bin/mipsel-linux-g++"))
+        .args(["-O2", "-c", "-o"])
+        .arg(dir.path().join("cycles.o"))
+        .arg(&unit)
+        .env("OPENR_HOST_CXX", &other)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{err}");
+    assert!(
+        err.lines().any(|l| l.ends_with("cycles.cc:4: note: [cargo-openr] no such instruction: `mfc0 %eax,$9': MIPS inline assembly the PC cannot run; the SDK's gcc plugin leaves it out, but this root has none for this compiler (`cargo openr doctor` says why); or put it under `#ifdef __mips__`")),
+        "{err}"
+    );
+}
+
+#[test]
 fn without_the_plugin_gcc_checks_the_pc_alignment_and_its_handler_returns() {
     let root = sdk_root();
     let dir = tempfile::tempdir().unwrap();

@@ -14,6 +14,7 @@
 //   OldCode.cc     ios::nocreate
 //   Pixels.c       casts used as lvalues (C, mipsel-linux-gcc)
 //   Label.cc       C library functions without their headers
+//   Cycles.cc      MIPS inline assembly (left out by the SDK's gcc plugin)
 //
 // Permissive.h/.cc holds habits that -fpermissive still accepts.
 //
@@ -35,6 +36,7 @@ int CountAbove(const int* values, int num, int limit);
 int GetNowMSec();
 std::string MakeLabel(const char* part, int value);
 int LabelValue(const std::string& label);
+unsigned int ReadCycles();
 
 static const char* const CONFIG_FILE = "/MS/OPEN-R/MW/CONF/OLDCODE.CFG";
 
@@ -92,6 +94,7 @@ OldCode::DoStart(const OSystemEvent& event)
 
     std::string label = MakeLabel("HEADPAN", 42);
     cout << "OldCode : label " << label << " value " << LabelValue(label) << endl;
+    cout << "OldCode : cycle counter " << ReadCycles() << endl;
 
     Servo servo(3);
     Quadrupler<int> quad;
