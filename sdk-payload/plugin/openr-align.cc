@@ -306,18 +306,16 @@ int plugin_init(struct plugin_name_args* info, struct plugin_gcc_version* versio
               gcc_version.datestamp, version->basever, version->datestamp);
         return 1;
     }
-    struct register_pass_info pass;
-    pass.pass = new align_pass(g);
-    pass.reference_pass_name = "ubsan";
-    pass.ref_pass_instance_number = 1;
-    pass.pos_op = PASS_POS_INSERT_AFTER;
-    register_callback(info->base_name, PLUGIN_PASS_MANAGER_SETUP, NULL, &pass);
-    struct register_pass_info mips;
-    mips.pass = new asm_pass(g);
-    mips.reference_pass_name = "ubsan";
-    mips.ref_pass_instance_number = 1;
-    mips.pos_op = PASS_POS_INSERT_AFTER;
-    register_callback(info->base_name, PLUGIN_PASS_MANAGER_SETUP, NULL, &mips);
+    // Both right after gcc's `ubsan` pass (it places the checks), before any optimisation.
+    opt_pass* passes[] = {new align_pass(g), new asm_pass(g)};
+    for (opt_pass* p : passes) {
+        struct register_pass_info after_ubsan;
+        after_ubsan.pass = p;
+        after_ubsan.reference_pass_name = "ubsan";
+        after_ubsan.ref_pass_instance_number = 1;
+        after_ubsan.pos_op = PASS_POS_INSERT_AFTER;
+        register_callback(info->base_name, PLUGIN_PASS_MANAGER_SETUP, NULL, &after_ubsan);
+    }
     static struct plugin_info about = {"2", "the robot's alignment trap, checked as the robot does; MIPS inline assembly left out"};
     register_callback(info->base_name, PLUGIN_INFO, NULL, &about);
     return 0;
