@@ -48,9 +48,18 @@ namespace {
 // The alignment the robot's CPU needs for an access of `type` that the PC wants
 // `host`-byte aligned: a double 8 (ldc1/sdc1), anything else at most a word.  The same
 // rule as libmcoopstub's handler (ubsan.cc), which words the fault.
+// A floating type the robot loads and stores with ldc1/sdc1: a double (its long double is
+// a double too).
+bool robot_double(tree type)
+{
+    return TREE_CODE(type) == REAL_TYPE && TYPE_PRECISION(type) >= 64;
+}
+
 unsigned HOST_WIDE_INT robot_alignment(tree type, unsigned HOST_WIDE_INT host)
 {
-    if (TREE_CODE(type) == REAL_TYPE && TYPE_PRECISION(type) == 64) return 8;
+    // A double the PC's type says is less aligned (packed, aligned(4)) was less aligned for
+    // the robot's gcc too, which then used word loads.
+    if (robot_double(type)) return host < 8 ? host : 8;
     return host < 4 ? host : 4;
 }
 
@@ -95,15 +104,20 @@ tree guarded_double(gimple_stmt_iterator gsi, tree ptr, HOST_WIDE_INT* offset)
 tree double_at(tree ref, tree ptr, HOST_WIDE_INT* offset)
 {
     tree type = TREE_TYPE(ref);
-    if (TREE_CODE(type) != REAL_TYPE || TYPE_PRECISION(type) != 64 || !handled_component_p(ref)) return NULL_TREE;
+    // Where gcc knows the double to be less than 8-aligned (a packed struct), the robot's
+    // gcc used word accesses.
+    if (!robot_double(type) || !handled_component_p(ref) || get_object_alignment(ref) < 64) return NULL_TREE;
     poly_int64 bitsize, bitpos;
     tree varying;
     machine_mode mode;
     int unsignedp, reversep, volatilep;
     tree base = get_inner_reference(ref, &bitsize, &bitpos, &varying, &mode, &unsignedp, &reversep, &volatilep);
     HOST_WIDE_INT bits;
-    if (varying || TREE_CODE(base) != MEM_REF || TREE_OPERAND(base, 0) != ptr || !bitpos.is_constant(&bits) || bits % BITS_PER_UNIT)
+    if (TREE_CODE(base) != MEM_REF || TREE_OPERAND(base, 0) != ptr || !bitpos.is_constant(&bits) || bits % BITS_PER_UNIT)
         return NULL_TREE;
+    // A varying part (an array index) that is a multiple of 8 leaves the double's address
+    // mod 8 where the constant part puts it.
+    if (varying && tree_ctz(varying) < 3) return NULL_TREE;
     poly_int64 extra;
     HOST_WIDE_INT more;
     if (!mem_ref_offset(base).to_shwi(&extra) || !extra.is_constant(&more)) return NULL_TREE;
@@ -226,6 +240,8 @@ struct align_pass : gimple_opt_pass {
                     HOST_WIDE_INT offset;
                     if (tree d = guarded_double(gsi, ptr, &offset)) c = {d, 8, 8, offset};
                 }
+                // Binding a reference, a call or a cast reads nothing: no ldc1 there.
+                if (recover && !access && c.need > 4) c.need = 4;
                 changed = true;
                 bool aligned = c.offset % (HOST_WIDE_INT)c.need == 0 && get_pointer_alignment(ptr) / BITS_PER_UNIT >= c.need;
                 if (c.need <= 1 || aligned) {
@@ -260,6 +276,40 @@ const pass_data asm_pass_data = {
     TODO_update_ssa_only_virtuals,
 };
 
+const char* skip_blanks(const char* t)
+{
+    while (*t == ' ' || *t == '\t' || *t == '\n' || *t == '\r') t++;
+    return t;
+}
+
+bool clobbers_memory(gasm* stmt)
+{
+    for (unsigned i = 0; i < gimple_asm_nclobbers(stmt); i++)
+        if (strcmp(TREE_STRING_POINTER(TREE_VALUE(gimple_asm_clobber_op(stmt, i))), "memory") == 0) return true;
+    return false;
+}
+
+// What output `i` (constraint `constraint`) holds once its asm is left out: nothing new
+// for an in-out operand ("+r"), the input tied to it ("0"), else 0 -- or null when
+// nothing can be assigned (an array of unknown or varying size).
+tree output_value(gasm* stmt, unsigned i, const char* constraint)
+{
+    tree out = TREE_VALUE(gimple_asm_output_op(stmt, i));
+    if (strchr(constraint, '+')) return NULL_TREE;
+    char tie[16];
+    snprintf(tie, sizeof(tie), "%u", i);
+    for (unsigned k = 0; k < gimple_asm_ninputs(stmt); k++) {
+        tree in = gimple_asm_input_op(stmt, k);
+        tree value = TREE_VALUE(in);
+        if (strcmp(TREE_STRING_POINTER(TREE_VALUE(TREE_PURPOSE(in))), tie) != 0) continue;
+        bool scalar = INTEGRAL_TYPE_P(TREE_TYPE(out)) || POINTER_TYPE_P(TREE_TYPE(out)) || SCALAR_FLOAT_TYPE_P(TREE_TYPE(out));
+        return scalar && is_gimple_val(value) && useless_type_conversion_p(TREE_TYPE(out), TREE_TYPE(value)) ? value : NULL_TREE;
+    }
+    tree size = TYPE_SIZE_UNIT(TREE_TYPE(out));
+    if (!size || TREE_CODE(size) != INTEGER_CST) return NULL_TREE;
+    return build_zero_cst(TREE_TYPE(out));
+}
+
 struct asm_pass : gimple_opt_pass {
     asm_pass(gcc::context* ctx) : gimple_opt_pass(asm_pass_data, ctx) {}
 
@@ -277,15 +327,32 @@ struct asm_pass : gimple_opt_pass {
                     gsi_next(&gsi);
                     continue;
                 }
+                // An empty template runs on any CPU (a compiler barrier, a value laundered).
+                if (!*skip_blanks(gimple_asm_string(stmt))) {
+                    gsi_next(&gsi);
+                    continue;
+                }
                 unsigned outputs = gimple_asm_noutputs(stmt);
                 for (unsigned i = 0; i < outputs; i++) {
-                    tree out = TREE_VALUE(gimple_asm_output_op(stmt, i));
-                    gimple* zero = gimple_build_assign(out, build_zero_cst(TREE_TYPE(out)));
-                    gimple_set_location(zero, loc);
-                    gsi_insert_before(&gsi, zero, GSI_SAME_STMT);
+                    tree op = gimple_asm_output_op(stmt, i);
+                    tree out = TREE_VALUE(op);
+                    tree value = output_value(stmt, i, TREE_STRING_POINTER(TREE_VALUE(TREE_PURPOSE(op))));
+                    if (!value) continue;
+                    gimple* set = gimple_build_assign(out, value);
+                    gimple_set_location(set, loc);
+                    gsi_insert_before(&gsi, set, GSI_SAME_STMT);
+                }
+                // A memory clobber (a `sync`) is kept as a compiler barrier.
+                if (clobbers_memory(stmt)) {
+                    vec<tree, va_gc>* clobbers = NULL;
+                    vec_safe_push(clobbers, build_tree_list(NULL_TREE, build_string(7, "memory")));
+                    gasm* barrier = gimple_build_asm_vec("", NULL, NULL, clobbers, NULL);
+                    gimple_asm_set_volatile(barrier, true);
+                    gimple_set_location(barrier, loc);
+                    gsi_insert_before(&gsi, barrier, GSI_SAME_STMT);
                 }
                 inform(loc, "%s MIPS inline assembly left out: the PC cannot run it%s", "[cargo-openr]",
-                       outputs ? "; its outputs are 0" : "");
+                       outputs ? "; its outputs are 0 (an in-out operand keeps its value)" : "");
                 unlink_stmt_vdef(stmt);
                 gsi_remove(&gsi, true);
                 changed = true;

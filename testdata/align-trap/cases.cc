@@ -47,6 +47,16 @@ struct Pose {
     double pan;
 };
 
+struct Packed {
+    int    frame;
+    double pan;
+} __attribute__((packed, aligned(4)));
+
+struct Track {
+    int    count;
+    double pan[4];
+};
+
 struct Counter {
     unsigned long sum;
     void add(const unsigned char* p, int n)
@@ -75,6 +85,18 @@ int main(int argc, char** argv)
     case 9: ((Pair*)at(4))->b = 1; break;                 // robot: a struct of words at 4, fine
     case 11: ((Pose*)at(4))->pan = 1; break;               // robot: sdc1 at 12, address error
     case 12: ((Pose*)at(4))->frame = 1; break;             // robot: sw at 4, fine
+    case 13: ((Packed*)at(4))->pan = 1; break;             // robot: known 4-aligned, lw/sw: fine
+    case 14: ((Track*)at(4))->pan[n - 13] = 1; break;      // robot: sdc1 at 12 + 8i, address error
+    case 15: *(volatile long double*)at(4) = 1; break;     // robot: a double, sdc1 wants 8
+    case 17: {                                            // an empty template: no MIPS, kept
+        int sum = 0;
+        for (int i = 0; i < 10; i++) {
+            sum += i;
+            __asm__ __volatile__("" : "+r"(sum) : : "memory");
+        }
+        printf("sum %d\n", sum);
+        break;
+    }
     case 10: {                                            // a loop through a member at 4
         unsigned char pixels[64];
         memset(pixels, 1, sizeof(pixels));

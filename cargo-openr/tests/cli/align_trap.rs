@@ -63,6 +63,14 @@ fn the_plugin_stops_exactly_what_the_robot_would_and_never_returns() {
     // the double itself 8-byte aligned, its int neighbour 4.
     assert_stops(&exe, 11, "'double' at 4 mod 8");
     assert_goes(&exe, 12);
+    // A double the type says is 4-aligned (packed) is none of ldc1's business; an array's
+    // at a varying index, and a long double (a double on the robot), are.
+    assert_goes(&exe, 13);
+    assert_stops(&exe, 14, "'double' at 4 mod 8");
+    assert_stops(&exe, 15, "'volatile long double' at 4 mod 8");
+    // An empty asm template is no MIPS and stays (a compiler barrier here).
+    let (code, out) = case(&exe, 17);
+    assert_eq!((code, out.as_str()), (Some(0), "sum 45\ncase 17 went through, the handler returned 0 times\n"));
     // Words of the robot at a 4-byte address: a long, a long long, a pointer, a struct
     // of words, a member summed in a loop. The handler is not even called.
     for n in [5, 7, 8, 9, 10] {
@@ -79,6 +87,24 @@ fn the_plugin_stops_exactly_what_the_robot_would_and_never_returns() {
     let (code, out) = case(&c, 5);
     assert_eq!((code, out.as_str()), (Some(0), "case 5 went through\n"));
     assert_stops(&c, 11, "'double' at 4 mod 8");
+}
+
+#[test]
+fn the_plugin_leaves_mips_assembly_out_and_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let exe = dir.path().join("mips-asm");
+    let out =
+        Command::new(sdk_root().join("bin/mipsel-linux-g++")).args(["-O2", "-fchecking=2", "-o"]).arg(&exe).arg(testdata("mips-asm.cc")).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    // One note per statement, at its line.
+    for line in [9, 10, 11] {
+        let note =
+            |l: &&str| l.contains(&format!("mips-asm.cc:{line}:")) && l.contains("note: [cargo-openr] MIPS inline assembly left out: the PC cannot run it");
+        assert!(err.lines().any(|l| note(&l)), "line {line}: {err}");
+    }
+    let run = Command::new(&exe).output().unwrap();
+    assert_eq!(String::from_utf8_lossy(&run.stdout), "count 0 kept 5\n");
 }
 
 #[test]

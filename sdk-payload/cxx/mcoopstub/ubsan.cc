@@ -53,7 +53,9 @@ char note[768];
 
 unsigned long robotAlignment(const TypeDescriptor* type, unsigned long hostAlignment)
 {
-    if (type->kind == 1 && type->info == 64) return 8;
+    // A double (the robot's long double is one too) is loaded with ldc1; one the PC's
+    // type says is less aligned (packed, aligned(4)) was less aligned on the robot too.
+    if (type->kind == 1 && type->info >= 64) return hostAlignment < 8 ? hostAlignment : 8;
     return hostAlignment < 4 ? hostAlignment : 4;
 }
 
