@@ -142,22 +142,16 @@ pub fn camera(exe: &Path, root: &Path, p: &Programs, tab: &mut Table) -> Result<
     // image (scene, layers, the hand-offs that deliver it), not the program's loop.
     let (_, per_image) = sweep(p.camsweep_nopixel)?;
     tab.push("host time per camera image, the runtime's share (camsweep with camwatch reading no pixel − headsweep alone)", per_image, "ms", None);
-    let (fast, per_image) = sweep(p.camsweep_notrap)?;
-    tab.push(
-        "camsweep with camwatch built without the alignment trap (OPENR_ALIGNMENT_TRAP=0) at --speed max, 60 s, start-up taken off",
-        SWEEP_S / fast,
-        "×",
-        Some(NO_CAMERA),
-    );
-    tab.push("host time per camera image, camwatch without the alignment trap", per_image, "ms", None);
-    let (slow, per_image) = sweep(p.camsweep_ubsan)?;
-    tab.push(
-        "camsweep with camwatch on gcc's own alignment check, not the plugin's (OPENR_ALIGNMENT_TRAP=ubsan) at --speed max, 60 s, start-up taken off",
-        SWEEP_S / slow,
-        "×",
-        Some(NO_CAMERA),
-    );
-    tab.push("host time per camera image, camwatch on gcc's own alignment check", per_image, "ms", None);
+    // camwatch built with the other alignment traps: (program, how built, per-image row).
+    let variants = [
+        (p.camsweep_notrap, "built without the alignment trap (OPENR_ALIGNMENT_TRAP=0)", "without the alignment trap"),
+        (p.camsweep_ubsan, "on gcc's own alignment check, not the plugin's (OPENR_ALIGNMENT_TRAP=ubsan)", "on gcc's own alignment check"),
+    ];
+    for (ms, built, short) in variants {
+        let (secs, per_image) = sweep(ms)?;
+        tab.push(&format!("camsweep with camwatch {built} at --speed max, 60 s, start-up taken off"), SWEEP_S / secs, "×", Some(NO_CAMERA));
+        tab.push(&format!("host time per camera image, camwatch {short}"), per_image, "ms", None);
+    }
     let (still, _) = max_speed_run(exe, p.camwatch, root, 60.0)?;
     tab.push("camera program, head still (camwatch) at --speed max, 60 s", 60.0 / still, "×", None);
     Ok(())
