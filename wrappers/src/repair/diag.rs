@@ -58,7 +58,7 @@ pub(crate) fn errors(stderr: &str) -> Vec<Diag> {
         let diag = Diag { loc, msg: msg.to_string(), fixits: Vec::new(), notes: Vec::new() };
         // The warning at a dependent member template without `template` is where the
         // parse went wrong: it leads the errors that follow it.
-        let lead = level == "warning" && msg.replace(['\u{2018}', '\u{2019}'], "'").starts_with(super::rules::MISSING_TEMPLATE_KEYWORD);
+        let lead = level == "warning" && super::rules::is_missing_template_keyword(msg);
         to = match (level, out.last_mut()) {
             ("error" | "fatal error", _) => {
                 out.push(diag);
@@ -83,6 +83,11 @@ pub(crate) fn errors(stderr: &str) -> Vec<Diag> {
     let mut keep = keep.into_iter();
     out.retain(|_| keep.next().unwrap_or(true));
     out
+}
+
+/// g++'s message with its typographic quotes (‘x’) made ASCII ('x'), as the rules match.
+pub(crate) fn ascii_quotes(msg: &str) -> String {
+    msg.replace(['\u{2018}', '\u{2019}'], "'")
 }
 
 /// `a.cc:4:5: error: msg` → (loc, "error", "msg").

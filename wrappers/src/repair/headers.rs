@@ -198,7 +198,7 @@ fn header_of(name: &str) -> Option<&'static str> {
 /// 'std'": the name and the header to include first (`<string.h>`, or `<cstring>` for
 /// a name written `std::memcpy`).
 pub(crate) fn missing(msg: &str) -> Option<(String, String)> {
-    let m = msg.replace(['\u{2018}', '\u{2019}'], "'");
+    let m = super::diag::ascii_quotes(msg);
     let name = m.strip_prefix('\'')?.split('\'').next()?;
     let header = header_of(name)?;
     if m.contains("' was not declared in this scope") {

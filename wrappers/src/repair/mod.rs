@@ -38,7 +38,7 @@ pub(crate) struct Repaired {
 pub(crate) fn attempt(exe: &Path, host: &[&str], args: &[OsString], first: &str) -> Option<Repaired> {
     let repairable = |level: &str, msg: &str| match level {
         "error" => rules::may_repair(msg) || headers::missing(msg).is_some(),
-        "warning" => msg.replace(['\u{2018}', '\u{2019}'], "'").starts_with(rules::MISSING_TEMPLATE_KEYWORD),
+        "warning" => rules::is_missing_template_keyword(msg),
         _ => false,
     };
     if !first.lines().filter_map(diag::split_diag).any(|(_, level, msg)| repairable(level, msg)) {
@@ -99,11 +99,30 @@ fn with_first(first: Option<&Path>, args: Vec<OsString>) -> Vec<OsString> {
     first.into_iter().flat_map(|f| [OsString::from("-include"), f.as_os_str().to_owned()]).chain(args).collect()
 }
 
-/// The C header to include first for error `d` (`headers`): a C library name used
-/// undeclared in a user file -- a function only where it is called, so that a variable
-/// of the unit's own called `index` or `time` is never taken for libc's. Notes it.
-fn header_first(d: &diag::Diag, shadow: &Shadow, notes: &mut Notes) -> Option<String> {
-    let (name, header) = headers::missing(&d.msg)?;
+/// Whether error `d` is a C library name used undeclared in a user file (`headers`) --
+/// a function only where it is called, so that a variable of the unit's own called
+/// `index` or `time` is never taken for libc's: its header is added to `first` (and
+/// noted) unless it is there already.
+fn header_first(d: &diag::Diag, shadow: &Shadow, first: &mut Vec<String>, notes: &mut Notes) -> bool {
+    let Some((name, header)) = headers::missing(&d.msg) else { return false };
+    if first.contains(&header) {
+        return true; // included already: nothing more for this name
+    }
+    let wanted = needs_header(d, shadow, &name);
+    if let Some(file) = wanted {
+        let text = format!(
+            "{}: note: [cargo-openr] repaired `{name}` used without its header (gcc 3.3's C++ headers included the C library's on the way; gcc 4.3 stopped): compiled with `#include <{header}>` first, in a private copy (your file is unchanged)",
+            d.loc
+        );
+        notes.0.push((file, d.loc.line, d.loc.col, text));
+        first.push(header);
+    }
+    wanted.is_some()
+}
+
+/// The user file in which error `d` names `name` as libc's would be used: as written
+/// there, and called if it is a function. Its index.
+fn needs_header(d: &diag::Diag, shadow: &Shadow, name: &str) -> Option<usize> {
     let file = shadow.find(&d.loc.file)?;
     let src = &shadow.files[file].src;
     let at = src.offset(d.loc.line, d.loc.col)?;
@@ -112,15 +131,7 @@ fn header_first(d: &diag::Diag, shadow: &Shadow, notes: &mut Notes) -> Option<St
         return None;
     }
     let called = src.code.get(at + bare.len()..).and_then(|rest| rest.iter().find(|b| !b.is_ascii_whitespace())) == Some(&b'(');
-    if headers::is_function(bare) && !called {
-        return None;
-    }
-    let text = format!(
-        "{}: note: [cargo-openr] repaired `{name}` used without its header (gcc 3.3's C++ headers included the C library's on the way; gcc 4.3 stopped): compiled with `#include <{header}>` first, in a private copy (your file is unchanged)",
-        d.loc
-    );
-    notes.0.push((file, d.loc.line, d.loc.col, text));
-    Some(header)
+    (called || !headers::is_function(bare)).then_some(file)
 }
 
 /// The shadow copies of the unit's user files, from the include tree of a preprocessing run.
@@ -162,14 +173,8 @@ fn choose(errors: &[diag::Diag], shadow: &Shadow, moves: &Moves, notes: &mut Not
             _ => None,
         };
         let Some(r) = r else {
-            if clean && !lines.contains(&(d.loc.file.clone(), d.loc.line)) {
-                if headers::missing(&d.msg).is_some_and(|(_, h)| first.contains(&h)) {
-                    continue; // its header is included already
-                }
-                if let Some(h) = header_first(d, shadow, notes) {
-                    first.push(h);
-                    continue;
-                }
+            if clean && !lines.contains(&(d.loc.file.clone(), d.loc.line)) && header_first(d, shadow, first, notes) {
+                continue;
             }
             clean = false;
             continue;

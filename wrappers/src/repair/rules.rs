@@ -72,12 +72,17 @@ pub(crate) struct Repair {
 
 /// g++'s warning at a dependent member template called without `template`
 /// (`u.get<int>()` in a template): the errors that follow are its consequences.
-pub(crate) const MISSING_TEMPLATE_KEYWORD: &str = "expected 'template' keyword before dependent template name";
+const MISSING_TEMPLATE_KEYWORD: &str = "expected 'template' keyword before dependent template name";
+
+/// Whether g++'s message (either quotes) is that warning.
+pub(crate) fn is_missing_template_keyword(msg: &str) -> bool {
+    super::diag::ascii_quotes(msg).starts_with(MISSING_TEMPLATE_KEYWORD)
+}
 
 /// Whether an error message may be of a repairable class (the gate before any shadow
 /// copy is made; the rules decide).
 pub(crate) fn may_repair(msg: &str) -> bool {
-    let m = msg.replace(['\u{2018}', '\u{2019}'], "'");
+    let m = super::diag::ascii_quotes(msg);
     m.contains("need 'typename' before")
         || m.contains("does not name a type")
         || m.contains("was not declared in this scope")
@@ -97,7 +102,7 @@ pub(crate) fn repair(d: &Diag, shadow: &Shadow) -> Option<Repair> {
     let file = shadow.find(&d.loc.file)?;
     let src = &shadow.files[file].src;
     let at = src.offset(d.loc.line, d.loc.col)?;
-    let m = d.msg.replace(['\u{2018}', '\u{2019}'], "'");
+    let m = super::diag::ascii_quotes(&d.msg);
     let names = quoted_names(&d.msg);
     let insert =
         |class, text: &str, pos: usize, how: String| Some(Repair { class, how, edits: vec![Edit { file, from: pos, to: pos, text: text.to_string() }] });
