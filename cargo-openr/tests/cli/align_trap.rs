@@ -251,4 +251,13 @@ fn a_root_says_why_it_has_no_plugin_and_builds_it_when_it_can() {
     // Each compiler keeps its own: the working one still has its plugin.
     let exe = build(&root, "mipsel-linux-g++", "cases.cc", &["-O2"], &[("OPENR_HOST_CXX", late.to_str().unwrap())], d, "late3");
     assert_stops(&exe, 1, "'volatile int' at 2 mod 8");
+
+    // A root the plugin cannot be written into is used as it is, with a warning.
+    let plugins_dir = root.join("libexec/openr-align");
+    std::fs::remove_dir_all(&plugins_dir).unwrap();
+    std::fs::write(&plugins_dir, "not a directory").unwrap();
+    let other = gxx_that(d, "blocked-g++", "");
+    let (ok, log) = with_gxx(&other, &["sdk", "install", "--prefix", root_s]);
+    assert!(ok, "{log}");
+    assert!(log.contains(&format!("warning: cannot build the alignment trap's gcc plugin into {root_s}:")) && log.contains("gcc's own, slower check"), "{log}");
 }
