@@ -6,9 +6,9 @@
 //!
 //! Spinning takes a core, so at most `cores − 1` threads of the process spin at once
 //! (none on one core), and each for at most the budget; with every slot taken a waiter
-//! spins only its first few microseconds (the slot's holder is often the thread about
-//! to send to it), then polls a little longer yielding its core at each round, and
-//! past that, or past the budget, it parks. A thread whose spins
+//! spins its first few microseconds (the slot's holder is often the thread about to
+//! send to it), then polls yielding its core at each round up to [`SHARED_SPIN`] (the
+//! default budget: the cap only shortens a longer `OPENR_SPIN_US`), then parks. A thread whose spins
 //! keep coming up empty (an object that gets a message a frame, not a chain of them)
 //! spins only now and then, to notice when that changes. `OPENR_SPIN_US` sets the budget (0: never
 //! spin).
@@ -32,8 +32,9 @@ const PURE_SPIN: Duration = Duration::from_micros(3);
 /// 10 → 8–9, 20 → 5.4–5.5, 50 → 4.8–5.0 (bench, 3 runs: 4.75–4.80; 16 camera robots in
 /// real time still 0 late frames). Past `PURE_SPIN` the poll yields its core each
 /// round, so on a busy machine it mostly lets others run (notify→ready with two CPU
-/// hogs on the 2 cores: 2.9 µs, the blocking channel's 11.8).
-const SHARED_SPIN: Duration = Duration::from_micros(50);
+/// hogs on the 2 cores: 2.9 µs, the blocking channel's 11.8). The same as the default
+/// budget, so it only caps a longer `OPENR_SPIN_US`.
+const SHARED_SPIN: Duration = DEFAULT_BUDGET;
 
 /// Empty spins in a row after which a thread spins only on every [`PROBE`]th wait.
 const MISSES: u32 = 3;
