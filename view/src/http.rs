@@ -201,41 +201,44 @@ fn read_request(reader: &mut BufReader<&TcpStream>, mut writer: &TcpStream, limi
     let head = read_head(reader, limits.head)?;
     let mut headers = [httparse::EMPTY_HEADER; MAX_HEADERS];
     let mut parsed = httparse::Request::new(&mut headers);
+    // A head ends at its blank line (read_head), so a parse is complete or an error.
     match parsed.parse(&head) {
         Ok(httparse::Status::Complete(_)) => {}
-        Ok(httparse::Status::Partial) => return Err(Stop::Refuse(400, "a malformed request: its head is incomplete".into())),
+        Ok(httparse::Status::Partial) | Err(httparse::Error::NewLine) => return Err(Stop::Refuse(400, "a malformed request: its head is incomplete".into())),
         Err(httparse::Error::TooManyHeaders) => return Err(Stop::Refuse(431, format!("a request with more than {MAX_HEADERS} header fields"))),
         Err(e) => return Err(Stop::Refuse(400, format!("a malformed request: {e}"))),
     }
-    let (Some(method), Some(url), Some(version)) = (parsed.method, parsed.path, parsed.version) else {
-        return Err(Stop::Refuse(400, "a malformed request line".into()));
-    };
+    // Complete: httparse has filled in the request line.
+    let (method, url, version) = (parsed.method.unwrap_or_default(), parsed.path.unwrap_or_default(), parsed.version.unwrap_or_default());
     let (mut length, mut close, mut keep_alive, mut expect_continue) = (None::<usize>, false, false, false);
     for h in parsed.headers.iter() {
-        const USED: [&str; 4] = ["content-length", "transfer-encoding", "connection", "expect"];
-        if !USED.iter().any(|u| h.name.eq_ignore_ascii_case(u)) {
+        let name = h.name.to_ascii_lowercase();
+        if !matches!(name.as_str(), "content-length" | "transfer-encoding" | "connection" | "expect") {
             continue;
         }
         let value = std::str::from_utf8(h.value).map_err(|_| Stop::Refuse(400, format!("a malformed request: its {} is not text", h.name)))?.trim();
         let tokens = || value.split(',').map(str::trim);
-        if h.name.eq_ignore_ascii_case("content-length") {
-            let n = Some(value).filter(|v| !v.is_empty() && v.bytes().all(|b| b.is_ascii_digit())).and_then(|v| v.parse().ok());
-            match (n, length) {
-                (Some(n), None) => length = Some(n),
-                (Some(n), Some(m)) if n == m => {}
-                _ => return Err(Stop::Refuse(400, format!("a bad Content-Length: {value}"))),
+        match name.as_str() {
+            "content-length" => {
+                let n = Some(value).filter(|v| !v.is_empty() && v.bytes().all(|b| b.is_ascii_digit())).and_then(|v| v.parse().ok());
+                match (n, length) {
+                    (Some(n), None) => length = Some(n),
+                    (Some(n), Some(m)) if n == m => {}
+                    _ => return Err(Stop::Refuse(400, format!("a bad Content-Length: {value}"))),
+                }
             }
-        } else if h.name.eq_ignore_ascii_case("transfer-encoding") {
-            return Err(if tokens().next_back().is_some_and(|t| t.eq_ignore_ascii_case("chunked")) {
-                Stop::Refuse(411, "a chunked request body: send it with a Content-Length".into())
-            } else {
-                Stop::Refuse(501, format!("a request body in a transfer coding this server does not know: {value}"))
-            });
-        } else if h.name.eq_ignore_ascii_case("connection") {
-            close |= tokens().any(|t| t.eq_ignore_ascii_case("close"));
-            keep_alive |= tokens().any(|t| t.eq_ignore_ascii_case("keep-alive"));
-        } else if h.name.eq_ignore_ascii_case("expect") {
-            expect_continue = value.eq_ignore_ascii_case("100-continue");
+            "transfer-encoding" => {
+                return Err(if tokens().next_back().is_some_and(|t| t.eq_ignore_ascii_case("chunked")) {
+                    Stop::Refuse(411, "a chunked request body: send it with a Content-Length".into())
+                } else {
+                    Stop::Refuse(501, format!("a request body in a transfer coding this server does not know: {value}"))
+                });
+            }
+            "connection" => {
+                close |= tokens().any(|t| t.eq_ignore_ascii_case("close"));
+                keep_alive |= tokens().any(|t| t.eq_ignore_ascii_case("keep-alive"));
+            }
+            _ => expect_continue = value.eq_ignore_ascii_case("100-continue"),
         }
     }
     let length = length.unwrap_or(0);

@@ -96,6 +96,10 @@ fn a_malformed_request_line_is_400_and_closes() {
         assert!(body.starts_with("a malformed request"), "{body}");
         assert!(head.contains("Connection: close\r\n") && closed, "{head}");
     }
+    // A header the server reads that is not text.
+    let (head, body, closed) = exchange(addr, b"POST / HTTP/1.1\r\nConnection: \xff\r\n\r\n");
+    assert!(head.starts_with("HTTP/1.1 400 Bad Request\r\n") && closed, "{head}");
+    assert_eq!(body, "a malformed request: its Connection is not text\n");
 }
 
 #[test]
