@@ -98,12 +98,7 @@ mod tests {
 
     /// The socket's TCP_NODELAY, as the kernel has it.
     fn nodelay(fd: RawFd) -> bool {
-        let mut v: libc::c_int = 0;
-        let mut len = std::mem::size_of::<libc::c_int>() as libc::socklen_t;
-        // SAFETY: `v` and `len` are live and sized for the option.
-        let r = unsafe { libc::getsockopt(fd, libc::IPPROTO_TCP, libc::TCP_NODELAY, (&mut v as *mut libc::c_int).cast(), &mut len) };
-        assert_eq!(r, 0);
-        v != 0
+        crate::sys::int_opt(fd, libc::IPPROTO_TCP, libc::TCP_NODELAY).expect("getsockopt TCP_NODELAY") != 0
     }
 
     #[test]

@@ -93,11 +93,20 @@ pub fn disconnect(fd: RawFd) -> Result<(), i32> {
 }
 
 pub fn so_error(fd: RawFd) -> i32 {
+    int_opt(fd, libc::SOL_SOCKET, libc::SO_ERROR).unwrap_or(0)
+}
+
+/// An int socket option (`getsockopt`), or the errno.
+pub fn int_opt(fd: RawFd, level: libc::c_int, name: libc::c_int) -> Result<libc::c_int, i32> {
     let mut v: libc::c_int = 0;
     let mut len = std::mem::size_of::<libc::c_int>() as libc::socklen_t;
     // SAFETY: out-params sized correctly.
-    unsafe { libc::getsockopt(fd, libc::SOL_SOCKET, libc::SO_ERROR, (&mut v as *mut libc::c_int).cast(), &mut len) };
-    v
+    let r = unsafe { libc::getsockopt(fd, level, name, (&mut v as *mut libc::c_int).cast(), &mut len) };
+    if r == 0 {
+        Ok(v)
+    } else {
+        Err(std::io::Error::last_os_error().raw_os_error().unwrap_or(libc::EIO))
+    }
 }
 
 pub fn local_addr(fd: RawFd) -> (u32, u16) {

@@ -127,13 +127,9 @@ fn patterned_buffer(net: &'static Net, size: usize) -> *mut u8 {
 }
 
 /// The TCP_NODELAY of socket `fd`, as the kernel has it.
+
 fn nodelay(fd: RawFd) -> bool {
-    let mut v: libc::c_int = 0;
-    let mut len = std::mem::size_of::<libc::c_int>() as libc::socklen_t;
-    // SAFETY: `v` and `len` are live locals sized for an int option.
-    let r = unsafe { libc::getsockopt(fd, libc::IPPROTO_TCP, libc::TCP_NODELAY, (&mut v as *mut libc::c_int).cast(), &mut len) };
-    assert_eq!(r, 0, "getsockopt: {}", std::io::Error::last_os_error());
-    v != 0
+    super::sys::int_opt(fd, libc::IPPROTO_TCP, libc::TCP_NODELAY).expect("getsockopt TCP_NODELAY") != 0
 }
 
 /// The descriptor of TCP endpoint `ep`'s socket.
