@@ -161,6 +161,35 @@ fn read_to_end(peer: &mut std::net::TcpStream) -> (Vec<u8>, Option<std::io::Erro
 }
 
 /// The warnings about a socket the epoll set refused.
+/// The warning that endpoint `ep`'s socket could not be armed (the refusing poller's EINVAL).
+fn refusal(ep: EndpointId) -> String {
+    format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0)
+}
+
+/// A stack on `poller` with a 1 MiB patterned buffer and a TCP endpoint connected to a
+/// peer that reads slowly (small window): (stack, its warnings, buffer, endpoint, peer).
+fn big_send_setup(poller: Poller) -> (&'static Net, Arc<Lines>, *mut u8, EndpointId, std::net::TcpStream) {
+    let (net, lines) = start(poller);
+    let buf = patterned_buffer(net, BIG);
+    let server = small_window_listener();
+    let (ep, res) = connected(net, &server);
+    assert_eq!(res.error, tcp::SUCCESS, "a connect done at once arms nothing");
+    let (peer, _) = server.accept().unwrap();
+    (net, lines, buf, ep, peer)
+}
+
+/// The peer of an endpoint closed in error: a reset after a part of the data, in order
+/// (3.4, 3.5: it cannot take the part for the whole).
+fn assert_reset_after_a_part(peer: &mut std::net::TcpStream) {
+    let (got, end) = read_to_end(peer);
+    assert_eq!(end, Some(std::io::ErrorKind::ConnectionReset), "the Close of the endpoint in error resets");
+    assert!(got.len() < BIG, "the whole Send went out: it never had to wait");
+    assert!(got.iter().enumerate().all(|(i, &b)| b == pattern(i)), "a part of the data, in order");
+}
+
+/// The Send that fills a slow peer's socket.
+const BIG: usize = 1 << 20;
+
 fn refused(lines: &Lines) -> Vec<String> {
     lines.get().into_iter().filter(|l| l.contains("cannot watch the socket")).collect()
 }
@@ -203,10 +232,7 @@ fn operations_fail_and_say_why_when_the_epoll_set_refuses_their_socket() {
     assert_eq!((res.op, res.error, res.size), (op::UDP_RECEIVE, udp::FAIL, 0));
 
     let lines = lines.get();
-    for want in [
-        format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0),
-        format!("warning: net: cannot watch the socket of UDP endpoint {} (epoll_ctl: Invalid argument (os error 22))", u.0),
-    ] {
+    for want in [refusal(ep), format!("warning: net: cannot watch the socket of UDP endpoint {} (epoll_ctl: Invalid argument (os error 22))", u.0)] {
         assert!(lines.contains(&want), "{want:?} not in {lines:?}");
     }
 }
@@ -270,19 +296,13 @@ fn a_stream_of_big_sends_arrives_whole_and_is_pushed_when_it_stops() {
 /// still succeeds. The peer got a part of the data, in order, never more.
 #[test]
 fn a_send_whose_socket_cannot_be_armed_fails_and_the_endpoint_is_in_error() {
-    const SIZE: usize = 1 << 20;
-    let (net, lines) = start(Poller::refusing().unwrap());
-    let buf = patterned_buffer(net, SIZE);
-    let server = small_window_listener();
-    let (ep, res) = connected(net, &server);
-    assert_eq!(res.error, tcp::SUCCESS, "a connect done at once arms nothing");
-    let (mut peer, _) = server.accept().unwrap();
+    let (net, lines, buf, ep, mut peer) = big_send_setup(Poller::refusing().unwrap());
     super::sys::set_int_opt(tcp_fd(net, ep), libc::SOL_SOCKET, libc::SO_SNDBUF, 4096);
 
     // The first operation that has to wait: its socket takes a part of the 1 MiB and is full.
-    let res = call(net, send(ep, buf, SIZE));
+    let res = call(net, send(ep, buf, BIG));
     assert_eq!((res.op, res.error), (op::TCP_SEND, tcp::FAIL));
-    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0)]);
+    assert_eq!(refused(&lines), [refusal(ep)]);
 
     let res = call(net, send(ep, buf, 1));
     assert_eq!((res.op, res.error), (op::TCP_SEND, tcp::FAIL), "the error sticks");
@@ -292,12 +312,7 @@ fn a_send_whose_socket_cannot_be_armed_fails_and_the_endpoint_is_in_error() {
     assert_eq!(call(net, request(PROTO_TCP, op::TCP_CLOSE, ep)).error, tcp::SUCCESS);
     assert_eq!(call(net, send(ep, buf, 1)).error, tcp::CONNECTION_CLOSED, "the endpoint is gone");
 
-    // An endpoint in error is closed by a reset (3.4, 3.5): the peer cannot take the
-    // part it got for the whole.
-    let (got, end) = read_to_end(&mut peer);
-    assert_eq!(end, Some(std::io::ErrorKind::ConnectionReset), "the Close after the failed Send resets");
-    assert!(got.len() < SIZE, "the whole Send went out: it never had to wait");
-    assert!(got.iter().enumerate().all(|(i, &b)| b == pattern(i)), "a part of the data, in order");
+    assert_reset_after_a_part(&mut peer);
 }
 
 /// A loopback listener whose accept queue is full (backlog 0 and one connection nobody
@@ -322,7 +337,7 @@ fn a_pending_connect_whose_socket_cannot_be_armed_fails_and_may_be_tried_again()
     (req.addr, req.port) = (LOOPBACK, full.local_addr().unwrap().port().into());
     let res = call(net, req);
     assert_eq!((res.op, res.error), (op::TCP_CONNECT, tcp::FAIL), "a connect done at once would say SUCCESS");
-    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0)]);
+    assert_eq!(refused(&lines), [refusal(ep)]);
     assert_eq!(call(net, request(PROTO_TCP, op::TCP_ADDRESS, ep)).error, tcp::OPERATION_INVALID, "not connected");
     assert_eq!(call(net, send(ep, shared_buffer(net), 1)).error, tcp::OPERATION_INVALID, "not connected");
 
@@ -343,20 +358,14 @@ fn a_pending_connect_whose_socket_cannot_be_armed_fails_and_may_be_tried_again()
 /// endpoint is gone and the peer got a part of the data, in order.
 #[test]
 fn a_close_behind_a_send_is_answered_after_it_when_the_socket_cannot_be_armed_again() {
-    const SIZE: usize = 1 << 20;
-    let (net, lines) = start(Poller::new().unwrap());
-    let buf = patterned_buffer(net, SIZE);
-    let server = small_window_listener();
-    let (ep, res) = connected(net, &server);
-    assert_eq!(res.error, tcp::SUCCESS);
-    let (mut peer, _) = server.accept().unwrap();
+    let (net, lines, buf, ep, mut peer) = big_send_setup(Poller::new().unwrap());
     // The endpoint's socket, by a descriptor of ours: the stack closes its own meanwhile.
     // SAFETY: dup of the endpoint's live descriptor; the copy is ours.
     let same = super::sys::owned(unsafe { libc::dup(tcp_fd(net, ep)) }).unwrap();
     super::sys::set_int_opt(same.as_raw_fd(), libc::SOL_SOCKET, libc::SO_SNDBUF, 4096);
 
     let (tx, rx) = mpsc::sync_channel(2);
-    submit(net, send(ep, buf, SIZE), &tx);
+    submit(net, send(ep, buf, BIG), &tx);
     assert!(rx.try_recv().is_err(), "the Send waits for room");
     assert!(net.lock().tcp(ep).unwrap().ever_armed(), "its socket is armed");
     submit(net, request(PROTO_TCP, op::TCP_CLOSE, ep), &tx);
@@ -370,15 +379,12 @@ fn a_close_behind_a_send_is_answered_after_it_when_the_socket_cannot_be_armed_ag
     assert_eq!((first.op, first.error), (op::TCP_SEND, tcp::FAIL));
     let second = rx.recv_timeout(PATIENCE).expect("the Close's reply");
     assert_eq!((second.op, second.error), (op::TCP_CLOSE, tcp::SUCCESS));
-    assert_eq!(refused(&lines), [format!("warning: net: cannot watch the socket of TCP endpoint {} (epoll_ctl: Invalid argument (os error 22))", ep.0)]);
+    assert_eq!(refused(&lines), [refusal(ep)]);
     assert_eq!(call(net, send(ep, buf, 1)).error, tcp::CONNECTION_CLOSED, "the endpoint is gone");
     assert_eq!(net.endpoint_protocol(ep), PROTO_TCP);
 
     drop(same);
-    let (got, end) = read_to_end(&mut peer);
-    assert_eq!(end, Some(std::io::ErrorKind::ConnectionReset), "the Close behind the failed Send resets");
-    assert!(got.len() < SIZE, "the whole Send went out");
-    assert!(got.iter().enumerate().all(|(i, &b)| b == pattern(i)), "a part of the data, in order");
+    assert_reset_after_a_part(&mut peer);
 }
 
 /// A UDP Send whose socket cannot take the datagram now and cannot be armed fails
