@@ -236,6 +236,15 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path, runs: usize, o
     let camera_programs = any(&[Group::Camera, Group::Robots]);
     let camwatch = build_if(camera_programs, programs.join("camwatch"))?;
     let headsweep = build_if(wanted(Group::Camera), programs.join("headsweep"))?;
+    // Without the SDK's gcc plugin the default build is the one on gcc's own check.
+    let plugin = match openr_wrappers::align_plugin::status(root) {
+        Ok(_) => true,
+        Err(why) if wanted(Group::Camera) => {
+            eprintln!("warning: no gcc plugin in the SDK root ({why}): camsweep measures gcc's own alignment check, and its OPENR_ALIGNMENT_TRAP=ubsan rows are left out");
+            false
+        }
+        Err(_) => false,
+    };
     // camsweep with camwatch built with OPENR_ALIGNMENT_TRAP=`trap`.
     let trap_variant = |name: &str, trap: &str| -> Result<PathBuf> {
         if !wanted(Group::Camera) {
@@ -255,7 +264,7 @@ pub fn run_all(exe: &Path, repo: &Path, root: &Path, work: &Path, runs: usize, o
         // robot's CPU would (`OPENR_ALIGNMENT_TRAP=0`): what that check costs its loop;
         // and with gcc's own check instead of the plugin's (`=ubsan`).
         camsweep_notrap: trap_variant("notrap", "0")?,
-        camsweep_ubsan: trap_variant("ubsan", "ubsan")?,
+        camsweep_ubsan: if plugin { trap_variant("ubsan", "ubsan")? } else { PathBuf::new() },
         camwatch,
         headsweep,
     };
