@@ -79,6 +79,21 @@ pub fn status(root: &Path) -> Result<PathBuf, String> {
     }
 }
 
+/// The package with gcc's plugin headers for the host C++ compiler, when they are not
+/// installed (`gcc-12-plugin-dev`): what `cargo openr doctor` tells to install.
+pub fn missing_headers_package() -> Option<String> {
+    let cxx = host_tool("g++", &["OPENR_HOST_CXX"]).ok()?;
+    match headers(&cxx) {
+        Some(_) => None,
+        None => Some(headers_package(&ask(&cxx, "-dumpfullversion")?)),
+    }
+}
+
+/// `gcc-<major>-plugin-dev` for gcc `version`.
+fn headers_package(version: &str) -> String {
+    format!("gcc-{}-plugin-dev", version.split('.').next().unwrap_or("N"))
+}
+
 /// gcc's plugin headers for `cxx`, if installed.
 fn headers(cxx: &Path) -> Option<PathBuf> {
     ask(cxx, "-print-file-name=plugin").map(|d| PathBuf::from(d).join("include")).filter(|d| d.join("gcc-plugin.h").is_file())
@@ -146,12 +161,9 @@ pub fn build(root: &Path) -> Result<(), Error> {
 /// Compiles the plugin with `cxx` into `out`; its gcc version, or why not.
 fn compile(root: &Path, cxx: &Path, out: &Path) -> Result<String, String> {
     let version = ask(cxx, "-dumpfullversion").ok_or_else(|| format!("{} -dumpfullversion failed", cxx.display()))?;
-    let major = version.split('.').next().unwrap_or("N").to_string();
+    let package = headers_package(&version);
     let headers = headers(cxx).ok_or_else(|| {
-        format!(
-            "{} {version} {NO_HEADERS} (apt-get install gcc-{major}-plugin-dev): the alignment trap uses gcc's own check, which slows tight loops",
-            cxx.display()
-        )
+        format!("{} {version} {NO_HEADERS} (apt-get install {package}): the alignment trap uses gcc's own check, which slows tight loops", cxx.display())
     })?;
     let built = Command::new(cxx)
         .args(["-shared", "-fPIC", "-fno-rtti", "-O2", "-o"])

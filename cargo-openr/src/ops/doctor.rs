@@ -56,12 +56,12 @@ fn align_plugin(sdk: &Path) -> Finding {
         Err(why) => {
             // Installing the headers is the usual fix; the next `sdk install` (or any
             // `cargo openr run`/`build`) then builds the plugin into the root.
-            let fix = why
-                .split("apt-get install ")
-                .nth(1)
-                .and_then(|r| r.split(')').next())
-                .map(|pkg| format!("apt-get install {pkg} && cargo openr sdk install --prefix {}", sdk.display()));
-            Finding { name, required: false, ok: false, detail: why, fix: fix.or_else(|| Some(format!("cargo openr sdk install --prefix {}", sdk.display()))) }
+            let install = format!("cargo openr sdk install --prefix {}", sdk.display());
+            let fix = match openr_wrappers::align_plugin::missing_headers_package() {
+                Some(pkg) => format!("apt-get install {pkg} && {install}"),
+                None => install,
+            };
+            Finding { name, required: false, ok: false, detail: why, fix: Some(fix) }
         }
     }
 }
