@@ -96,8 +96,8 @@ pub fn raw_ping_pong(rounds: usize) -> (f64, f64, f64) {
     let secs = start.elapsed().as_secs_f64();
     drop(to_b);
     let _ = echo.join();
-    rtt.sort_by(|a, b| a.total_cmp(b));
-    (rtt[rounds / 2], rtt[rounds * 99 / 100], 2.0 * rounds as f64 / secs)
+    let (p50, p99) = stats::p50_p99(&mut rtt);
+    (p50, p99, 2.0 * rounds as f64 / secs)
 }
 
 /// The machine's limit for a hand-off between two threads that are both running: each
@@ -108,13 +108,24 @@ pub fn spin_ping_pong(rounds: usize) -> (f64, f64) {
     use std::sync::Arc;
     // Odd: the echo thread's turn; even: the measuring thread's.
     let word = Arc::new(AtomicU32::new(0));
+    // Waits for `value`; a wait that goes on (one core: the other thread is not running)
+    // yields now and then instead of spinning out the time slice. A hand-off between
+    // running threads takes far fewer spins than that.
+    fn wait_for(word: &AtomicU32, value: u32) {
+        let mut spins = 0u32;
+        while word.load(Ordering::Acquire) != value {
+            spins += 1;
+            if spins % 100_000 == 0 {
+                std::thread::yield_now();
+            }
+            std::hint::spin_loop();
+        }
+    }
     let echo = {
         let word = word.clone();
         std::thread::spawn(move || {
             for i in 0..rounds as u32 {
-                while word.load(Ordering::Acquire) != 2 * i + 1 {
-                    std::hint::spin_loop();
-                }
+                wait_for(&word, 2 * i + 1);
                 word.store(2 * i + 2, Ordering::Release);
             }
         })
@@ -123,14 +134,11 @@ pub fn spin_ping_pong(rounds: usize) -> (f64, f64) {
     for i in 0..rounds as u32 {
         let t = Instant::now();
         word.store(2 * i + 1, Ordering::Release);
-        while word.load(Ordering::Acquire) != 2 * i + 2 {
-            std::hint::spin_loop();
-        }
+        wait_for(&word, 2 * i + 2);
         rtt.push(t.elapsed().as_nanos() as f64);
     }
     let _ = echo.join();
-    rtt.sort_by(|a, b| a.total_cmp(b));
-    (rtt[rounds / 2], rtt[rounds * 99 / 100])
+    stats::p50_p99(&mut rtt)
 }
 
 /// Runs `n` runtimes on `ms` at once for `secs` of robot time (real-time speed): the

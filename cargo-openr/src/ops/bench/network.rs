@@ -64,8 +64,7 @@ fn echo_rtt(port: u16, rounds: usize) -> Result<(f64, f64)> {
             rtt.push(t.elapsed().as_nanos() as f64 / 1000.0);
         }
     }
-    rtt.sort_by(|a, b| a.total_cmp(b));
-    Ok((rtt[rounds / 2], rtt[rounds * 99 / 100]))
+    Ok(super::stats::p50_p99(&mut rtt))
 }
 
 /// `RETR name` in passive mode (the 227 port plus `pasv_offset`): bytes per second.

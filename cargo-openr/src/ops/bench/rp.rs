@@ -144,8 +144,8 @@ pub fn raw_tcp_ping_pong(rounds: usize) -> Result<RoundTrip> {
     let secs = start.elapsed().as_secs_f64();
     drop(c);
     let _ = echo.join();
-    rtt.sort_by(f64::total_cmp);
-    Ok(RoundTrip { p50_us: rtt[rounds / 2], p99_us: rtt[rounds * 99 / 100], rate: 2.0 * rounds as f64 / secs })
+    let (p50_us, p99_us) = super::stats::p50_p99(&mut rtt);
+    Ok(RoundTrip { p50_us, p99_us, rate: 2.0 * rounds as f64 / secs })
 }
 
 #[cfg(test)]

@@ -22,6 +22,13 @@ pub struct Spread {
     pub max: f64,
 }
 
+/// p50 and p99 of round-trip samples (sorted in place; at least one).
+pub fn p50_p99(samples: &mut [f64]) -> (f64, f64) {
+    samples.sort_by(f64::total_cmp);
+    let n = samples.len();
+    (samples[n / 2], samples[n * 99 / 100])
+}
+
 impl Spread {
     pub fn of(values: &[f64]) -> Option<Spread> {
         let mut v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
