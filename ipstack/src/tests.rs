@@ -252,9 +252,9 @@ fn a_failing_epoll_wait_is_said_once_and_a_refused_listen_still_fails_on_time() 
     assert_eq!(said("warning: net: cannot watch a listening socket (epoll_ctl: Invalid argument (os error 22))"), 1, "{lines:?}");
 }
 
-/// A stream of 8 KiB Sends (ftpd's RETR) arrives whole and in order, and however the
-/// kernel was let join them (see `stream`), the endpoint is back to TCP_NODELAY once the
-/// Sends stop (the poll thread's look) — nothing is left waiting for an ACK.
+/// A stream of 8 KiB Sends (ftpd's RETR) arrives whole and in order, and a joined stream
+/// is back to TCP_NODELAY once the Sends stop (the poll thread's timer) — nothing is
+/// left waiting for an ACK.
 #[test]
 fn a_stream_of_big_sends_arrives_whole_and_is_pushed_when_it_stops() {
     use std::io::Read;
@@ -278,11 +278,21 @@ fn a_stream_of_big_sends_arrives_whole_and_is_pushed_when_it_stops() {
         (send.buffer, send.size) = (buf.cast(), CHUNK as i32);
         assert_eq!(call(net, send).error, tcp::SUCCESS);
     }
+    // However this machine's timing let the Sends join, the stream is joined now and the
+    // poll thread's timer, alone, must push it.
+    {
+        let mut st = net.lock();
+        let now = Instant::now();
+        st.tcp(ep).unwrap().join_stream(now);
+        st.schedule(now + super::stream::PUSH_AFTER);
+    }
+    assert!(!nodelay(tcp_fd(net, ep)), "joined");
     let deadline = Instant::now() + PATIENCE;
     while net.lock().tcp(ep).unwrap().joining() {
         assert!(Instant::now() < deadline, "the stream was never pushed");
         std::thread::sleep(Duration::from_millis(1));
     }
+    assert!(nodelay(tcp_fd(net, ep)), "pushed by the poll thread");
     assert_eq!(call(net, request(PROTO_TCP, op::TCP_CLOSE, ep)).error, tcp::SUCCESS);
     let all = reader.join().unwrap().expect("the peer reads to the end");
     assert_eq!(all.len(), CHUNK * CHUNKS);
