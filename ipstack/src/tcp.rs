@@ -376,16 +376,14 @@ fn connect(t: &mut TcpEp, cfg: &NetConfig, p: Pending) -> bool {
     t.robot_lport = bind_source_port(cfg, &fd, robot_lport);
     let (daddr, dport) = cfg.remote(req.addr, req.port as u16, "TCP connect");
     match sys::connect(fd.as_raw_fd(), daddr, dport) {
-        Ok(at_once) => {
-            let raw = fd.as_raw_fd();
+        // Connected at once or in progress (a non-blocking TCP connect on Linux always
+        // says EINPROGRESS, loopback included): progress() answers it when the socket is
+        // writable, without arming it when it already is.
+        Ok(_) => {
             t.attach(Some(fd));
             t.phase = TcpPhase::Connecting;
-            if at_once {
-                connected(t, raw, p);
-            } else {
-                t.connect = Some(p);
-            }
-            !at_once
+            t.connect = Some(p);
+            true
         }
         Err(e) => {
             p.fail(tcp_error(e));
